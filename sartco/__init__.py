@@ -1,0 +1,1 @@
+"""SARTCo bench: the world, the sandboxed executor, instances and scores shared by both games."""

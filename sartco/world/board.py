@@ -1,0 +1,54 @@
+"""The board and its one canonical form: {"row:col": [[shape, color], ...]} bottom to top."""
+from __future__ import annotations
+
+from .components import DEFAULT_COLS, DEFAULT_ROWS
+from .errors import ErrorCode, WorldError
+
+Cells = dict[str, list[list[str]]]
+
+
+class Board:
+    """A rows x cols grid of stacks. A bridge is listed in both of its cells."""
+
+    __slots__ = ("rows", "cols", "stacks", "puts")
+
+    def __init__(self, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS):
+        for name, value in (("rows", rows), ("cols", cols)):
+            if type(value) is not int:
+                raise WorldError(ErrorCode.TYPE_ERROR, f"init_board: {name} must be an integer, got {type(value).__name__}")
+            if not 1 <= value <= 64:
+                raise WorldError(ErrorCode.DIMENSIONS_MISMATCH, f"init_board: {name}={value} is outside 1..64")
+        self.rows = rows
+        self.cols = cols
+        self.stacks: list[list[list[tuple[str, str]]]] = [[[] for _ in range(cols)] for _ in range(rows)]
+        self.puts = 0
+
+    def __repr__(self) -> str:
+        return f"<board {self.rows}x{self.cols}, {self.puts} pieces>"
+
+    def cells(self) -> Cells:
+        """The canonical form, keys in row-major order, empty cells left out."""
+        return {
+            f"{r}:{c}": [list(piece) for piece in stack]
+            for r, row in enumerate(self.stacks)
+            for c, stack in enumerate(row)
+            if stack
+        }
+
+    @classmethod
+    def from_cells(cls, cells: Cells, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS) -> "Board":
+        board = cls(rows, cols)
+        for key, stack in cells.items():
+            r, c = parse_key(key)
+            board.stacks[r][c] = [(shape, color) for shape, color in stack]
+        return board
+
+
+def parse_key(key: str) -> tuple[int, int]:
+    row, _, col = key.partition(":")
+    return int(row), int(col)
+
+
+def sort_cells(cells: Cells) -> Cells:
+    """The same cells with keys in row-major order (the canonical order for JSON)."""
+    return {k: [list(p) for p in cells[k]] for k in sorted(cells, key=parse_key)}

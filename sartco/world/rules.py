@@ -1,0 +1,72 @@
+"""The assembly rules: one check, in the order of the authors' simulator, then one placement.
+
+Where the authors' simulator was wrong we are right (see ../shared/sartco-data/README.md):
+- a negative coordinate is dimensions_mismatch (theirs wrapped around to the last row);
+- an unknown colour is key_error (theirs stored any string by its first letter);
+- nothing goes on a screw, a bridge included (theirs let a bridge onto a screw);
+- a failed put leaves the board unchanged (theirs left a failed bridge's first half).
+
+Bridges: `bridge-h` at (x, y) also covers (x, y+1), `bridge-v` also covers (x+1, y). The
+same-shape rules are checked at the anchor cell (x, y): the published gold boards stack a
+bridge-h's second cell directly on another bridge-h (object bbb), which the authors' simulator
+accepted, and the paper's 68 objects depend on it.
+"""
+from __future__ import annotations
+
+from .board import Board
+from .components import BRIDGES, COLORS, MAX_DEPTH, NOTHING_ON_TOP, SHAPES
+from .errors import ErrorCode, WorldError
+
+E = ErrorCode
+
+
+def _fail(code: ErrorCode, message: str):
+    raise WorldError(code, message)
+
+
+def check(board: Board, shape, color, x, y) -> list[tuple[int, int]]:
+    """Raise the first rule a placement violates; return the cells it would cover."""
+    for name, value in (("x", x), ("y", y)):
+        if type(value) is not int:
+            _fail(E.TYPE_ERROR, f"{name} must be an integer, got {type(value).__name__} {value!r:.40}")
+    if not (0 <= x < board.rows and 0 <= y < board.cols):
+        _fail(E.DIMENSIONS_MISMATCH, f"({x}, {y}) is outside the {board.rows}x{board.cols} board")
+    stacks = board.stacks
+    anchor = stacks[x][y]
+    if len(anchor) >= MAX_DEPTH:
+        _fail(E.VALUE_ERROR, f"cell ({x}, {y}) is full ({MAX_DEPTH} pieces)")
+    cells = [(x, y)]
+    offset = BRIDGES.get(shape) if isinstance(shape, str) else None
+    if offset is not None:
+        x2, y2 = x + offset[0], y + offset[1]
+        if not (x2 < board.rows and y2 < board.cols):
+            _fail(E.VALUE_ERROR, f"{shape} at ({x}, {y}) needs cell ({x2}, {y2}), which is off the board")
+        if len(anchor) >= 2:
+            _fail(E.BRIDGE_PLACEMENT, f"{shape} at ({x}, {y}) would sit at level {len(anchor) + 1}; bridges go on level 1 or 2")
+        if len(stacks[x2][y2]) != len(anchor):
+            _fail(E.DEPTH_MISMATCH, f"{shape} at ({x}, {y}) spans cells of heights {len(anchor)} and {len(stacks[x2][y2])}")
+        cells.append((x2, y2))
+    for cx, cy in cells:
+        below = stacks[cx][cy]
+        if below and below[-1][0] in NOTHING_ON_TOP:
+            _fail(E.NOT_ON_TOP_OF_SCREW, f"cell ({cx}, {cy}) has a {below[-1][0]} on top; nothing goes on a screw")
+    if anchor and anchor[-1][0] == shape:
+        _fail(E.SAME_SHAPE_STACKING, f"{shape} directly on a {shape} at ({x}, {y})")
+    if len(anchor) >= 2 and anchor[-2][0] == shape:
+        _fail(E.SAME_SHAPE_AT_ALTERNATE_LEVELS, f"{shape} two levels above a {shape} at ({x}, {y})")
+    if shape not in SHAPES:
+        _fail(E.KEY_ERROR, f"unknown shape {shape!r:.40}; expected one of {', '.join(SHAPES)}")
+    if color not in COLORS:
+        _fail(E.KEY_ERROR, f"unknown colour {color!r:.40}; expected one of {', '.join(COLORS)}")
+    return cells
+
+
+def put(board: Board, shape, color, x, y) -> Board:
+    """Place one piece, or raise WorldError and leave the board unchanged."""
+    if not isinstance(board, Board):
+        _fail(E.TYPE_ERROR, f"put: the first argument must be a board, got {type(board).__name__}")
+    piece = (shape, color)
+    for cx, cy in check(board, shape, color, x, y):
+        board.stacks[cx][cy].append(piece)
+    board.puts += 1
+    return board
