@@ -1,0 +1,5 @@
+import sys
+
+from sartco.cli import main
+
+sys.exit(main())

@@ -1,0 +1,45 @@
+"""The `sartco` command. Each subcommand lives in its own module, imported only when chosen,
+so that `sartco execute` starts fast. A module exposes `configure(parser)` and `run(args) -> int`.
+"""
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+
+COMMANDS = {
+    "execute": ("sartco.program.cli", "run programs from JSON lines on stdin in the sandbox"),
+    "bench-execute": ("sartco.program.bench", "throughput of `sartco execute` against bare compile()"),
+    "generate": ("sartco.instances.generate", "write a dataset version from a YAML config and a seed"),
+    "stats": ("sartco.instances.stats", "table 1 of the paper, computed by enumeration"),
+    "import": ("sartco.instances.importer", "convert the published SARTCo files into the dataset format"),
+    "import-instructions": ("sartco.instances.describer_import", "turn describer results into a dataset"),
+    "report": ("sartco.scores.report", "paper-style tables from a clemcore results folder"),
+}
+
+
+class UserError(Exception):
+    """A mistake in the user's input: printed as one line, no traceback, exit code 2."""
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="sartco", description=__doc__.splitlines()[0])
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
+    argv = sys.argv[1:] if argv is None else argv
+    chosen = next((a for a in argv if not a.startswith("-")), None)
+    modules = {}
+    for name, (module, help_text) in COMMANDS.items():
+        p = sub.add_parser(name, help=help_text, description=help_text)
+        if name == chosen:
+            modules[name] = importlib.import_module(module)
+            modules[name].configure(p)
+    args = parser.parse_args(argv)
+    try:
+        return int(modules[args.command].run(args) or 0)
+    except UserError as exc:
+        print(f"sartco {args.command}: {exc}", file=sys.stderr)
+        return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main())
