@@ -1,0 +1,126 @@
+"""Regular boards: an arrangement instruction (+ the given object function) -> the anchors of the object."""
+from __future__ import annotations
+
+import ast
+import re
+
+from ..world.components import BRIDGES
+from . import parse as p
+from .parse import Arrangement, FollowError
+
+Cells = frozenset[tuple[int, int]]
+
+
+def function_name(context: str) -> str | None:
+    m = re.search(r"^\s*def\s+([A-Za-z_]\w*)\s*\(", context or "", re.MULTILINE)
+    return m.group(1) if m else None
+
+
+def footprint(context: str, name: str | None, n_colors: int) -> Cells | None:
+    """The cells the given object function covers when called at (0, 0), relative to its anchor.
+
+    The follower reads the object function the way a model would: it calls it once on a recording
+    board (no world rules, no real board). Any failure just means "unknown" (None).
+    """
+    if not context or not name or "import" in context or "__" in context:
+        return None
+    try:
+        tree = ast.parse(context)
+    except SyntaxError:
+        return None
+    if any(isinstance(node, (ast.While, ast.Import, ast.ImportFrom, ast.Global)) for node in ast.walk(tree)):
+        return None
+    cells: set[tuple[int, int]] = set()
+
+    def put(board, shape, color, x, y):
+        dx, dy = BRIDGES.get(shape, (0, 0))
+        cells.update({(x, y), (x + dx, y + dy)})
+
+    safe = {"zip": zip, "range": range, "len": len, "enumerate": enumerate, "list": list, "tuple": tuple}
+    namespace = {"__builtins__": safe, "put": put}
+    try:
+        exec(compile(tree, "<object function>", "exec"), namespace)  # noqa: S102 - the game's own function
+        namespace[name](None, ["red"] * max(n_colors, 1), 0, 0)
+    except Exception:  # noqa: BLE001 - an unreadable function just gives no footprint
+        return None
+    if not cells or not all(isinstance(c, int) for cell in cells for c in cell):
+        return None
+    return frozenset(cells)
+
+
+def _span(cells: Cells) -> tuple[int, int]:
+    xs = [x for x, _ in cells]
+    ys = [y for _, y in cells]
+    return max(xs) - min(xs) + 1, max(ys) - min(ys) + 1
+
+
+def arrange(text: str, context: str = "", rows: int = 8, cols: int = 8) -> Arrangement:
+    """Read a regular-board instruction; decide where the object's anchors go."""
+    kind, m = p.arrangement_kind(text)
+    colors = p.colors_of(text)
+    name = function_name(context) or p.regular_name(text)
+    cells = footprint(context, function_name(context), len(colors))
+    size = p.size_of(text) or (_span(cells) if cells else (1, 1))
+    h, w = size
+    if cells is None:
+        cells = frozenset((dx, dy) for dx in range(h) for dy in range(w))
+    R, C = rows - h + 1, cols - w + 1  # anchors must leave room for the whole object
+
+    def grid(rs, cs) -> Arrangement:
+        rs, cs = tuple(rs), tuple(cs)
+        if not rs or not cs:
+            raise FollowError(f"a {h}x{w} object does not fit the {rows}x{cols} board this way")
+        return Arrangement(name, colors, tuple((r, c) for r in rs for c in cs), rs, cs)
+
+    if kind == "corners":
+        corners = []
+        for pos in ((0, 0), (0, C - 1), (R - 1, 0), (R - 1, C - 1)):
+            if pos not in corners:
+                corners.append(pos)
+        return Arrangement(name, colors, tuple(corners))
+    if kind == "diagonal":
+        taken: set[tuple[int, int]] = set()
+        anchors = []
+        for i in range(min(R, C)):  # each next diagonal cell where the object does not overlap
+            mine = {(i + dx, i + dy) for dx, dy in cells}
+            if mine & taken:
+                continue
+            taken |= mine
+            anchors.append((i, i))
+        return Arrangement(name, colors, tuple(anchors))
+    if kind == "alternate_grid":  # one empty row / column between objects
+        return grid(range(0, R, h + 1), range(0, C, w + 1))
+    if kind == "fill_column":  # packed down the column; "every alternate column" skips one
+        first = p._index(p.ordinal(m.group("first")), cols, "column")
+        return grid(range(0, R, h), range(first, C, w + 1) if m.group("repeat") else [first])
+    if kind == "fill_row":
+        first = p._index(p.ordinal(m.group("first")), rows, "row")
+        return grid(range(first, R, h + 1) if m.group("repeat") else [first], range(0, C, w))
+    if kind == "list_of_line":
+        return _list_of_line(m, name, colors, rows, cols, h, w, grid)
+    raise AssertionError(kind)
+
+
+def _axis(word: str | None) -> str | None:
+    return None if word is None else ("row" if word.lower().startswith("row") else "col")
+
+
+def _list_of_line(m, name, colors, rows, cols, h, w, grid) -> Arrangement:
+    """'in the first, fourth, and seventh columns of the first row. Then, repeat ... in the
+    remaining rows' (or '... in the fifth row')."""
+    axis, line_axis = _axis(m.group("axis")), _axis(m.group("line_axis"))
+    if axis == line_axis:
+        raise FollowError(f"'{m.group(0)[:80]}': the list and the line are both {axis}s")
+    size = {"row": rows, "col": cols}
+    listed = [p._index(v, size[axis], axis) for v in p.ordinal_list(m.group("list"))]
+    line = p._index(p.ordinal(m.group("line")), size[line_axis], line_axis)
+    extent = {"row": h, "col": w}[line_axis]
+    if m.group("remaining"):
+        if _axis(m.group("rem_axis")) != line_axis:
+            raise FollowError(f"'{m.group(0)[:80]}': repeated along {m.group('rem_axis')}")
+        lines = sorted(set(range(line % extent, size[line_axis] - extent + 1, extent)) | {line})
+    elif m.group("more"):
+        lines = [line] + [p._index(v, size[line_axis], line_axis) for v in p.ordinal_list(m.group("more"))]
+    else:
+        lines = [line]
+    return grid(lines, listed) if line_axis == "row" else grid(listed, lines)
