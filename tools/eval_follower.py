@@ -131,19 +131,24 @@ def main(argv=None) -> int:
         return 2
     results, how = evaluate(args.data, args.file)
     print(f"executor: {how}")
-    print(f"{'file':24} {'variant':20} {'source':9} {'task':18} {'n':>5} {'parsed':>7} {'ES %':>7}")
+    print(f"{'file':24} {'variant':20} {'source':9} {'task':18} {'n':>5} {'parsed':>7} {'run err':>7} "
+          f"{'other':>6} {'ES %':>7}")
     totals = defaultdict(lambda: [0, 0])
     for (name, variant), r in sorted(results.items()):
+        kinds = [kind for _, kind, _, _ in r["failures"]]
+        r["run_errors"], r["other_board"] = kinds.count("run"), kinds.count("board")
         print(f"{name:24} {variant:20} {r['source']:9} {r['task']:18} {r['n']:5d} {r['parsed']:7d} "
-              f"{100 * r['es'] / r['n']:7.1f}")
+              f"{r['run_errors']:7d} {r['other_board']:6d} {100 * r['es'] / r['n']:7.1f}")
         totals[r["source"]][0] += r["es"]
         totals[r["source"]][1] += r["n"]
         for sid, kind, message, texts in r["failures"][: args.failures]:
             print(f"    [{kind}] {sid}: {message[:160]}\n        {' || '.join(texts)[:300]!r}")
     for source, (es, n) in totals.items():
         print(f"total {source:9} {es}/{n} = {100 * es / n:.1f}%")
+    print("parsed: the follower wrote code; run err: the code failed under the world's rules; "
+          "other: it ran but built another board")
     if args.json:
-        table = [{"file": f, "variant": v, **{k: r[k] for k in ("source", "task", "n", "parsed", "es")},
+        table = [{"file": f, "variant": v, **{k: r[k] for k in ("source", "task", "n", "parsed", "run_errors", "other_board", "es")},
                   "es_percent": round(100 * r["es"] / r["n"], 1)} for (f, v), r in sorted(results.items())]
         args.json.write_text(json.dumps(table, indent=1) + "\n")
     template_ok = all(r["es"] == r["n"] for r in results.values() if r["source"] == "template")

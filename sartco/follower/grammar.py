@@ -47,12 +47,13 @@ TOKEN = re.compile(
     rf"|\b(?P<orient>{_w(k for k in ORIENTATION_WORDS if not k.startswith('bridge'))})\b"
     rf"|\b(?P<color>{_w(COLOR_WORDS)})\b"
     rf"|\b(?P<shape>{_w(SHAPE_WORDS)})\b"
-    # "8th row", "the eighth row", "row 8", "row number 8", "top row", "the last row"
+    # "8th row", "the eighth row", "row 8", "row number 8", "Row(8)" (the grid explanation's form,
+    # sartco.world.render), "top row", "the last row"
     rf"|\b(?P<row_ord>{ORD})\s+rows?\b"
-    rf"|\brows?\s+(?:number\s+|no\.?\s*|#\s*)?(?P<row_num>{NUM})\b"
+    rf"|\brows?\s*(?:\(\s*|number\s+|no\.?\s*|#\s*)?(?P<row_num>{NUM})\b"
     rf"|\b(?P<row_edge>{_w(ROW_EDGES)})\s+rows?\b"
     rf"|\b(?P<col_ord>{ORD})\s+(?:columns?|cols?)\b"
-    rf"|\b(?:columns?|cols?)\s+(?:number\s+|no\.?\s*|#\s*)?(?P<col_num>{NUM})\b"
+    rf"|\b(?:columns?|cols?)\s*(?:\(\s*|number\s+|no\.?\s*|#\s*)?(?P<col_num>{NUM})\b"
     rf"|\b(?P<col_edge>{_w(COL_EDGES)})\s*-?\s*(?:most\s+)?(?:columns?|cols?)\b"
     # "on top of it", "on it", "on top", "above it", "in the same position": the previous cell
     r"|\b(?P<same>on\s+top(?:\s+of\s+(?:it|that|this|them))?|on\s+(?:it|that)|above\s+it"
