@@ -126,7 +126,11 @@ def anchors(code: str, context: str) -> set[tuple[int, int]]:
     ("Place a 'ns' object in the first, fourth, and seventh rows of the first column. Then, repeat this placement "
      "pattern in the remaining columns. Use only these colors: ['red', 'blue'] for the 'ns' object.",
      NS, {(r, c) for r in (0, 3, 6) for c in range(8)}),
-    ("Place a 'ns' object at all the corners of the grid. Use only these colors: ['red', 'blue'] for the 'ns' object.",
+    ("Place a 'bw' object in the 1st, 4th and 7th columns of the 1st row, then repeat in all remaining rows. "
+     "Colors: red, yellow.", BW_H, {(r, c) for r in range(8) for c in (0, 3, 6)}),
+    ("Place a 'ns' object in the 1st and 5th columns of the 1st row, then repeat this in the 3rd and 5th rows. "
+     "Colors: red, yellow.", NS, {(r, c) for r in (0, 2, 4) for c in (0, 4)}),
+    ("PLACE A 'NS' OBJECT AT ALL THE CORNERS OF THE GRID. USE ONLY THESE COLORS: ['RED', 'BLUE'] FOR THE 'NS' OBJECT.",
      NS, {(0, 0), (0, 7), (7, 0), (7, 7)}),
     ("Place a 'bw' object at all the corners of the grid. Use only these colors: ['red', 'blue'] for the 'bw' object.",
      BW_H, {(0, 0), (0, 6), (7, 0), (7, 6)}),  # the object is 1x2: it must fit in the corner
@@ -172,6 +176,8 @@ def test_repetition_colours_and_name_without_context():
     ([42], "first_order", "", "list of strings"),
     (["Make something pretty with 'ns' objects. Use only these colors: ['red']"], "repetition", NS, "arrangement"),
     (["Place a 'ns' object at all the corners of the grid."], "repetition", NS, "colours"),
+    (["Place a 'ns' object in the 1st and 5th columns of the 1st row. Then repeat it wherever you like. "
+      "Colors: red, blue"], "repetition", NS, "where to repeat"),
     (["Place objects at all the corners of the grid. Use only these colors: ['red']"], "repetition", "", "name"),
 ])
 def test_unreadable_instructions_raise_follow_error(instructions, task, context, fragment):

@@ -109,8 +109,8 @@ ARRANGEMENTS: list[tuple[str, re.Pattern]] = [
     ("list_of_line", re.compile(
         rf"\b(?P<list>{ORD_LIST})\s+{_AX.format('axis')}\s+(?:of|in)\s+the\s+(?P<line>{ORD})\s+"
         rf"{_AX.format('line_axis')}"
-        rf"(?:.*?\brepeat\b.*?\b(?:in|on|for|across)\s+(?:all\s+)?the\s+"
-        rf"(?:(?P<remaining>remaining|other|rest\s+of\s+the|all)\s+{_AX.format('rem_axis')}"
+        rf"(?:.*?\brepeat\b.*?\b(?:in|on|for|across|over|to)\s+(?:all\s+)?(?:of\s+)?(?:the\s+)?"
+        rf"(?:(?P<remaining>remaining|other|rest\s+of\s+the|all|every|each)\s+{_AX.format('rem_axis')}"
         rf"|(?P<more>{ORD_LIST})\s+{_AX.format('more_axis')}))?",
         re.IGNORECASE | re.DOTALL)),
 ]

@@ -121,6 +121,8 @@ def _list_of_line(m, name, colors, rows, cols, h, w, grid) -> Arrangement:
         lines = sorted(set(range(line % extent, size[line_axis] - extent + 1, extent)) | {line})
     elif m.group("more"):
         lines = [line] + [p._index(v, size[line_axis], line_axis) for v in p.ordinal_list(m.group("more"))]
+    elif re.search(r"\brepeat", m.string[m.start():], re.IGNORECASE):
+        raise FollowError(f"could not read where to repeat the pattern in {m.string[m.start():].strip()!r:.160}")
     else:
         lines = [line]
     return grid(lines, listed) if line_axis == "row" else grid(listed, lines)
