@@ -170,6 +170,7 @@ def test_repetition_colours_and_name_without_context():
     ([""], "optimal_function", "", "no placement"),
     (["Place a red bridge in the 1st row, 2nd column."], "first_order", "", "orientation"),
     (["Place a washer in the 1st row, 2nd column."], "first_order", "", "colour"),
+    (["Place a washer and a red nut in row 8, column 4."], "first_order", "", "washer without a colour"),
     (["Place a red washer somewhere nice."], "first_order", "", "row and column"),
     (["Place a red washer in the 9th row, 2nd column."], "first_order", "", "outside"),
     (["Place a red washer in the 1st row, 2nd column."], "fourth_order", "", "unknown task"),

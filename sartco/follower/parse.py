@@ -79,8 +79,9 @@ def placements(text: str, rows: int = 8, cols: int = 8,
     """Every placement in a text, in order. `previous` resolves 'on top of it' in the first clause.
 
     Each clause is read as a stream of tokens (colour, shape, orientation, row, column, 'on top');
-    a shape word opens a new piece, words before it (colour, orientation) and after it (row,
-    column, orientation) fill that piece's fields. A piece without a cell goes on the previous one.
+    a shape word opens a new piece. A colour is an adjective: it goes to the next shape (or, at
+    the end of a clause, to the last piece still without one). Other words fill the current
+    piece's empty fields, or wait for the next piece. A piece without a cell goes on the previous one.
     """
     out: list[Placement] = []
     last = previous
@@ -99,12 +100,15 @@ def placements(text: str, rows: int = 8, cols: int = 8,
                 current.shape = g.SHAPE_WORDS[value.lower()]
                 pieces.append(current)
                 continue
-            target = current if current is not None else pending
             field, val = _token_value(kind, value, rows, cols)
-            if getattr(target, field) not in (None, False) and target is current:
+            target = pending if current is None or field == "color" else current
+            if getattr(target, field) not in (None, False):
                 target = pending          # already set: it belongs to the next piece
             if getattr(target, field) in (None, False):
                 setattr(target, field, val)
+        colorless = [p for p in pieces if p.color is None]
+        if pending.color and colorless:   # "... a nut in the 8th row, red"
+            colorless[-1].color = pending.color
         for p in pieces:
             last = _resolve(p, last, rows, cols, clause)
             out.append(last)
