@@ -1,0 +1,11 @@
+"""Shared clemcore glue for the SARTCo games (installed, because clemcore unloads modules that
+live inside a game folder). Reuse these from any game whose player writes code:
+
+- parsing.parse_code / ParseError      find the code in an answer (no code -> aborted)
+- outcomes                             the one ErrorCode -> clemcore outcome/logging translation
+- building.build / parse_failure / log_build / BuildRecord   execute, compare, record
+- builder.Builder                      the Builder player (mock = gold, rulebased, human)
+- scoring.BuildScorer                  scores.json from the recorded build
+- pictures.attach_all                  board pictures for transcripts, written at `clem score`
+- rulebased.RulebasedBackend           `-m rulebased` (the rule-based follower as a model)
+"""

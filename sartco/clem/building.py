@@ -1,0 +1,116 @@
+"""Run a builder's code through sartco.program and record what happened, as one JSON-able record.
+
+The game master calls `build(...)` once per episode (or once per attempt in a repair
+experiment), logs the record with `log_build`, and moves the game state with
+sartco.clem.outcomes. The scorer reads the record back with `BuildRecord.from_json`; it never
+executes anything.
+"""
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass, field, fields
+
+from sartco.world import ErrorCode
+from sartco.world.render import differing_cells
+
+from .outcomes import SUCCESS_CATEGORY, family
+
+BUILD_KEY = "sartco_build"          # interactions.json key of the final build record
+ATTEMPTS_KEY = "sartco_attempts"    # every attempt's record, for repair experiments
+BOARD_EVENT = "board"               # the GM->GM event that shows target and built board
+
+
+@dataclass(frozen=True, slots=True)
+class BuildRecord:
+    builder_code: str                 # what the builder wrote (all turns joined)
+    program: str                      # what was executed: init_board + given code + builder code
+    ok: bool                          # the program ran to the end
+    error: str | None                 # ErrorCode value when the program failed (or parse_error)
+    message: str
+    cells: dict                       # the board built (so far, when the program failed)
+    target: dict
+    puts: int
+    es: int                           # 1 when cells == target and ok
+    category: str                     # error, mismatch category, or "success"
+    precision: float
+    recall: float
+    f1: float
+    rows: int = 8
+    cols: int = 8
+    turn_codes: list = field(default_factory=list)  # one entry per builder turn
+
+    def to_json(self) -> dict:
+        return asdict(self)
+
+    @classmethod
+    def from_json(cls, data: dict) -> "BuildRecord":
+        names = {f.name for f in fields(cls)}
+        return cls(**{k: v for k, v in data.items() if k in names})
+
+    @property
+    def family(self) -> str:
+        return family(self.category)
+
+    def summary(self) -> str:
+        """One line for transcripts: what happened and where."""
+        if self.category == SUCCESS_CATEGORY:
+            return f"success: the target was built ({self.puts} puts)"
+        if self.error == ErrorCode.PARSE_ERROR:
+            return f"parse_error: {self.message}"
+        diff = len(differing_cells(self.target, self.cells))
+        detail = f" - {self.message}" if self.message else ""
+        return (f"{self.category} ({self.family}){detail}; {self.puts} puts, {diff} cells differ, "
+                f"cell P/R/F1 {self.precision:.2f}/{self.recall:.2f}/{self.f1:.2f}")
+
+
+def compose_program(builder_code: str, *, given_code: str = "", rows: int = 8, cols: int = 8) -> str:
+    """The program executed for an episode: the given code (e.g. the object function of a
+    repetition task), a fresh board, then the builder's code - the paper's total_code layout."""
+    parts = [given_code.strip()] if given_code.strip() else []
+    parts.append(f"board = init_board({rows}, {cols})")
+    parts.append(builder_code.strip())
+    return "\n".join(parts) + "\n"
+
+
+def build(builder_code: str, target: dict, *, given_code: str = "", rows: int = 8, cols: int = 8,
+          turn_codes: list[str] | None = None, limits=None) -> BuildRecord:
+    """Execute the builder's code on a fresh board and compare it with the target."""
+    from sartco.program import compare, execute  # the only place model-written code runs
+
+    program = compose_program(builder_code, given_code=given_code, rows=rows, cols=cols)
+    ex = execute(program, rows=rows, cols=cols) if limits is None else execute(program, rows=rows, cols=cols, limits=limits)
+    cmp = compare(ex.cells, target)
+    if not ex.ok:
+        category = str(ErrorCode(ex.error)) if ex.error is not None else str(ErrorCode.RUNTIME_ERROR)
+        es = 0
+    else:
+        es = int(cmp.es)
+        category = SUCCESS_CATEGORY if es else str(ErrorCode(cmp.category)) if cmp.category else SUCCESS_CATEGORY
+    return BuildRecord(
+        builder_code=builder_code, program=program, ok=bool(ex.ok),
+        error=None if ex.error is None else str(ErrorCode(ex.error)), message=ex.message or "",
+        cells=ex.cells, target=target, puts=int(ex.puts), es=es, category=category,
+        precision=float(cmp.precision), recall=float(cmp.recall), f1=float(cmp.f1),
+        rows=rows, cols=cols, turn_codes=list(turn_codes or [builder_code]),
+    )
+
+
+def parse_failure(target: dict, message: str, *, turn_codes: list[str] | None = None,
+                  rows: int = 8, cols: int = 8) -> BuildRecord:
+    """The record of an episode aborted because an answer held no code: nothing was executed."""
+    code = "\n".join(turn_codes or [])
+    return BuildRecord(
+        builder_code=code, program="", ok=False, error=str(ErrorCode.PARSE_ERROR), message=message,
+        cells={}, target=target, puts=0, es=0, category=str(ErrorCode.PARSE_ERROR),
+        precision=0.0, recall=0.0, f1=0.0, rows=rows, cols=cols, turn_codes=list(turn_codes or []),
+    )
+
+
+def log_build(game_master, record: BuildRecord, *, final: bool = True) -> None:
+    """Record a build in the episode: a GM->GM 'board' event for the transcript (the executed
+    program and the category; `clem score` later links the board pictures to it) and, for the
+    final build, the record under BUILD_KEY for the scorer."""
+    content = f"{record.summary()}\n\nexecuted program:\n{record.program or '(nothing: no code found)'}"
+    game_master.log_event("GM", "GM", {"type": BOARD_EVENT, "content": content,
+                                       "category": record.category})
+    if final:
+        game_master.log_key(BUILD_KEY, record.to_json())

@@ -1,0 +1,70 @@
+"""The one place where sartco's error vocabulary meets clemcore's outcomes and logging.
+
+- no code in the answer (ErrorCode.PARSE_ERROR)      -> Outcome.ABORTED (clemcore: not played)
+- the program raised, broke a rule, hit a budget     -> Outcome.FAILURE (lost, category recorded)
+- the program ran and built another board            -> Outcome.FAILURE (lost, mismatch category)
+- the program built the target                       -> Outcome.SUCCESS
+Games call `outcome_for` / `set_outcome` and `log_outcome`; nothing else maps codes to outcomes.
+"""
+from __future__ import annotations
+
+from clemcore.clemgame import metrics
+from clemcore.clemgame.master import Outcome
+
+from sartco.world import MISMATCH_CODES, ErrorCode
+
+# families of error codes, for reports and transcripts
+PYTHON_CODES = frozenset({
+    ErrorCode.SYNTAX_ERROR, ErrorCode.KEY_ERROR, ErrorCode.NAME_ERROR, ErrorCode.TYPE_ERROR,
+    ErrorCode.VALUE_ERROR, ErrorCode.INDEX_ERROR, ErrorCode.ZERO_DIVISION, ErrorCode.RUNTIME_ERROR,
+})
+WORLD_CODES = frozenset({
+    ErrorCode.DIMENSIONS_MISMATCH, ErrorCode.DEPTH_MISMATCH, ErrorCode.BRIDGE_PLACEMENT,
+    ErrorCode.SAME_SHAPE_STACKING, ErrorCode.SAME_SHAPE_AT_ALTERNATE_LEVELS, ErrorCode.NOT_ON_TOP_OF_SCREW,
+})
+SANDBOX_CODES = frozenset({ErrorCode.FORBIDDEN, ErrorCode.TIMEOUT, ErrorCode.RESOURCE_LIMIT})
+
+SUCCESS_CATEGORY = "success"  # the category recorded when the target was built
+
+
+def family(category: str | None) -> str:
+    """parse | python | world | sandbox | mismatch | success, for one recorded category."""
+    if category in (None, "", SUCCESS_CATEGORY):
+        return "success"
+    code = ErrorCode(category)
+    if code is ErrorCode.PARSE_ERROR:
+        return "parse"
+    if code in PYTHON_CODES:
+        return "python"
+    if code in WORLD_CODES:
+        return "world"
+    if code in SANDBOX_CODES:
+        return "sandbox"
+    if code in MISMATCH_CODES:
+        return "mismatch"
+    return "other"
+
+
+def outcome_for(category: str | ErrorCode | None) -> Outcome:
+    """The clemcore outcome of an episode whose final build has this category (None = success)."""
+    if category in (None, "", SUCCESS_CATEGORY):
+        return Outcome.SUCCESS
+    if ErrorCode(category) is ErrorCode.PARSE_ERROR:
+        return Outcome.ABORTED
+    return Outcome.FAILURE
+
+
+def set_outcome(state, category: str | ErrorCode | None) -> Outcome:
+    """Move a clemcore GameState to the outcome of `category`."""
+    outcome = outcome_for(category)
+    {Outcome.SUCCESS: state.succeed, Outcome.FAILURE: state.failed, Outcome.ABORTED: state.abort}[outcome]()
+    return outcome
+
+
+def log_outcome(game_master) -> None:
+    """Log Aborted, Success and Lose (0/1 ints) from the game master's final state; clemcore's
+    scorer copies them into scores.json and `clem eval` derives % played from Aborted."""
+    outcome = game_master.state.outcome
+    game_master.log_key(metrics.METRIC_ABORTED, int(outcome is Outcome.ABORTED))
+    game_master.log_key(metrics.METRIC_SUCCESS, int(outcome is Outcome.SUCCESS))
+    game_master.log_key(metrics.METRIC_LOSE, int(outcome is Outcome.FAILURE))

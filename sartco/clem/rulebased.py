@@ -1,0 +1,29 @@
+"""The clemcore backend that makes the rule-based follower selectable as a model: `clem run -g
+cobot_instruct -m rulebased`. Registered by the repository's model_registry.json entry
+{"model_name": "rulebased", "backend": "rulebased"} and the one-line rulebased_api.py in the
+repository root (clemcore looks for `<backend>_api.py` in the working directory).
+
+The model is a CustomResponseModel, so clemcore's Player calls the game's
+`Builder._custom_response`, which asks sartco.follower instead of returning the gold code.
+"""
+from __future__ import annotations
+
+from clemcore.backends import Backend, CustomResponseModel, Model, ModelSpec
+
+from .builder import RULEBASED
+
+
+class RulebasedModel(CustomResponseModel):
+    def __init__(self, model_spec: ModelSpec):
+        super().__init__(model_spec)
+
+    def supports_batching(self) -> bool:
+        # clemcore's batch path only injects players for the names mock/programmatic
+        return False
+
+
+class RulebasedBackend(Backend):
+    def get_model_for(self, model_spec: ModelSpec) -> Model:
+        if model_spec.model_name != RULEBASED:
+            raise ValueError(f"the rulebased backend serves only the model '{RULEBASED}', not {model_spec.model_name!r}")
+        return RulebasedModel(model_spec)
