@@ -1,0 +1,66 @@
+"""A built board against its target: execution success, mismatch category, cell P/R/F1.
+
+- es is 1 only if every cell's stack equals the target's (empty cells ignored).
+- category: target cells scanned in row-major order, the first differing cell decides:
+  missing cell -> mismatch_location; another stack height -> mismatch_count; other shapes
+  (as a multiset) -> mismatch_shape; the same shapes in another order -> mismatch_order;
+  else (only colours differ) -> mismatch_color. If all target cells match, a built cell that
+  the target leaves empty -> mismatch_location. Equal boards -> None.
+- precision/recall/F1 over the sets of (row, col, level, shape, colour) entries, level 0 at the
+  bottom (a bridge counts in both its cells). 0/0 is 1.0 only when both boards are empty
+  (nothing to build, nothing built); otherwise an undefined ratio is 0.0.
+"""
+from __future__ import annotations
+
+from sartco.world import ErrorCode, parse_key
+
+from .records import Comparison
+
+E = ErrorCode
+
+
+def _stacks(cells: dict) -> dict[str, list[tuple]]:
+    return {k: [tuple(p) for p in v] for k, v in cells.items() if v}
+
+
+def _category(built: dict, target: dict) -> ErrorCode | None:
+    for key in sorted(target, key=parse_key):
+        want, got = target[key], built.get(key)
+        if got is None:
+            return E.MISMATCH_LOCATION
+        if got == want:
+            continue
+        if len(got) != len(want):
+            return E.MISMATCH_COUNT
+        shapes_got, shapes_want = [p[0] for p in got], [p[0] for p in want]
+        if sorted(shapes_got) != sorted(shapes_want):
+            return E.MISMATCH_SHAPE
+        if shapes_got != shapes_want:
+            return E.MISMATCH_ORDER
+        return E.MISMATCH_COLOR
+    if any(key not in target for key in built):
+        return E.MISMATCH_LOCATION
+    return None
+
+
+def _entries(stacks: dict) -> set[tuple]:
+    out = set()
+    for key, stack in stacks.items():
+        r, c = parse_key(key)
+        for level, piece in enumerate(stack):
+            out.add((r, c, level) + tuple(piece))
+    return out
+
+
+def compare(built_cells: dict, target_cells: dict) -> Comparison:
+    built, target = _stacks(built_cells), _stacks(target_cells)
+    category = _category(built, target)
+    b, t = _entries(built), _entries(target)
+    hit = len(b & t)
+    if not b and not t:
+        precision = recall = f1 = 1.0
+    else:
+        precision = hit / len(b) if b else 0.0
+        recall = hit / len(t) if t else 0.0
+        f1 = 2 * precision * recall / (precision + recall) if precision + recall else 0.0
+    return Comparison(int(category is None), category, precision, recall, f1)

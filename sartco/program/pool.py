@@ -1,0 +1,225 @@
+"""The parent side: persistent worker processes, batching, hard time limits, restarts.
+
+`execute_many` sends programs in batches (one JSON line per batch) to up to `workers` worker
+processes (default: min(2, CPUs)), each driven by one thread; `execute` is a batch of one. A
+worker answers each program on its own line, so the parent knows which program is running and
+gives each one `Limits.wall_time` seconds from the moment the previous answer was read. A late
+answer kills the worker (SIGKILL, then reaped) and the program gets `timeout`; a worker that
+dies gets its program `resource_limit` (killed by a signal, e.g. memory) or `runtime_error`.
+The rest of the batch goes to a fresh worker. Nothing raises out of `execute`/`execute_many`.
+
+Workers are started lazily with `python -I -S`, survive between calls (the common case pays
+no start-up) and are killed at exit or by `shutdown()`. After a fork the child starts its own.
+"""
+from __future__ import annotations
+
+import atexit
+import json
+import os
+import select
+import subprocess
+import sys
+import threading
+import time
+from collections import deque
+from pathlib import Path
+
+from sartco.world import Board, ErrorCode, WorldError
+
+from .records import Execution, Limits
+
+E = ErrorCode
+BATCH = 64  # programs per worker round trip when a call is split over several workers
+START_TIMEOUT = 30.0
+_ROOT = str(Path(__file__).resolve().parents[2])
+_BOOT = (
+    "import sys; sys.path.insert(0, sys.argv[1]); "
+    "from sartco.program.worker import main; sys.exit(main())"
+)
+
+
+class _Dead(Exception):
+    """The worker process is gone or unusable."""
+
+
+class _Worker:
+    def __init__(self):
+        self.proc: subprocess.Popen | None = None
+        self.lines: deque[bytes] = deque()
+        self.tail = b""
+        self.lock = threading.Lock()
+
+    # -- process ---------------------------------------------------------------------------
+    def start(self):
+        self.proc = subprocess.Popen(
+            [sys.executable, "-I", "-S", "-c", _BOOT, _ROOT],
+            stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+            close_fds=True, cwd="/",
+        )
+        self.lines.clear()
+        self.tail = b""
+        if self._readline(time.monotonic() + START_TIMEOUT) != b'"ready"':
+            self.kill()
+            raise _Dead("the sandbox worker did not start")
+
+    def kill(self) -> int | None:
+        proc, self.proc = self.proc, None
+        if proc is None:
+            return None
+        try:
+            proc.kill()
+        except OSError:
+            pass
+        for stream in (proc.stdin, proc.stdout):
+            try:
+                stream.close()
+            except OSError:
+                pass
+        return proc.wait()
+
+    # -- i/o --------------------------------------------------------------------------------
+    def _readline(self, deadline: float) -> bytes | None:
+        """The next answer line; None when the deadline passed; raise _Dead on EOF."""
+        fd = self.proc.stdout.fileno()
+        while not self.lines:
+            remaining = deadline - time.monotonic()
+            if remaining <= 0 or not select.select([fd], [], [], remaining)[0]:
+                return None
+            chunk = os.read(fd, 1 << 16)
+            if not chunk:
+                raise _Dead("the sandbox worker ended")
+            parts = (self.tail + chunk).split(b"\n")
+            self.tail = parts.pop()
+            self.lines.extend(parts)
+        return self.lines.popleft()
+
+    def run(self, programs: list[str], rows: int, cols: int, limits: Limits, cache: bool) -> list[Execution]:
+        results: list[Execution] = []
+        while len(results) < len(programs):
+            todo = programs[len(results):]
+            try:
+                if self.proc is None:
+                    self.start()
+                request = json.dumps({"limits": limits.as_list(), "rows": rows, "cols": cols,
+                                      "cache": cache, "programs": todo})
+                self.proc.stdin.write(request.encode("utf-8", "surrogatepass") + b"\n")
+                self.proc.stdin.flush()
+            except (_Dead, OSError, ValueError) as exc:
+                self.kill()
+                results.extend(_failed(E.RUNTIME_ERROR, f"sandbox unavailable: {exc}") for _ in todo)
+                break
+            for _ in todo:
+                try:
+                    line = self._readline(time.monotonic() + limits.wall_time)
+                except (_Dead, OSError):
+                    status = self.kill()
+                    if status is not None and status < 0:
+                        results.append(_failed(E.RESOURCE_LIMIT, f"the program was stopped by signal {-status} (probably its memory budget)"))
+                    else:
+                        results.append(_failed(E.RUNTIME_ERROR, f"the sandbox worker ended (status {status})"))
+                    break
+                if line is None:
+                    self.kill()
+                    results.append(_failed(E.TIMEOUT, f"the program ran longer than {limits.wall_time:g} s"))
+                    break
+                try:
+                    results.append(_decode(line))
+                except (ValueError, TypeError, KeyError) as exc:
+                    self.kill()
+                    results.append(_failed(E.RUNTIME_ERROR, f"garbled answer from the sandbox worker: {exc}"))
+                    break
+        return results
+
+
+def _failed(code: ErrorCode, message: str) -> Execution:
+    return Execution(False, code, message, {}, 0)
+
+
+def _decode(line: bytes) -> Execution:
+    ok, code, message, cells, puts = json.loads(line)
+    if type(ok) is not bool or type(message) is not str or type(cells) is not dict or type(puts) is not int:
+        raise ValueError("unexpected field types")
+    return Execution(ok, None if code is None else ErrorCode(code), message, cells, puts)
+
+
+# --- the pool -----------------------------------------------------------------------------------
+
+_workers: list[_Worker] = []
+_pool_pid = None
+_pool_lock = threading.Lock()
+
+
+def _get_workers(n: int) -> list[_Worker]:
+    global _pool_pid, _workers
+    with _pool_lock:
+        if _pool_pid != os.getpid():  # a forked child must not share its parent's workers
+            _workers, _pool_pid = [], os.getpid()
+        while len(_workers) < n:
+            _workers.append(_Worker())
+        return _workers[:n]
+
+
+def shutdown() -> None:
+    """Kill and reap every worker of this process (they restart on the next call)."""
+    with _pool_lock:
+        if _pool_pid == os.getpid():
+            for worker in _workers:
+                with worker.lock:
+                    worker.kill()
+
+
+atexit.register(shutdown)
+
+
+def default_workers() -> int:
+    return max(1, min(2, os.cpu_count() or 1))
+
+
+def execute_many(programs, rows: int = 8, cols: int = 8, limits: Limits | None = None, *,
+                 workers: int | None = None, cache: bool = True) -> list[Execution]:
+    """Run many programs, each on its own fresh board; results in input order."""
+    try:
+        programs = list(programs)
+        limits = limits or Limits()
+        try:
+            Board(rows, cols)
+        except WorldError as exc:
+            return [_failed(exc.code, exc.message) for _ in programs]
+        results: list[Execution | None] = [None] * len(programs)
+        todo = [i for i, p in enumerate(programs) if type(p) is str]
+        for i, p in enumerate(programs):
+            if type(p) is not str:
+                results[i] = _failed(E.TYPE_ERROR, f"the program must be a str, not {type(p).__name__}")
+        n = min(workers or default_workers(), max(1, -(-len(todo) // BATCH)))
+        chunks = [todo[k:k + BATCH] for k in range(0, len(todo), BATCH)] if n > 1 else [todo]
+        feed = iter(chunks)
+        feed_lock = threading.Lock()
+
+        def drive(worker: _Worker):
+            with worker.lock:
+                while True:
+                    with feed_lock:
+                        chunk = next(feed, None)
+                    if chunk is None:
+                        return
+                    done = worker.run([programs[i] for i in chunk], rows, cols, limits, cache)
+                    for i, ex in zip(chunk, done):
+                        results[i] = ex
+
+        pool = _get_workers(n)
+        if n == 1:
+            drive(pool[0])
+        else:
+            threads = [threading.Thread(target=drive, args=(w,), daemon=True) for w in pool]
+            for t in threads:
+                t.start()
+            for t in threads:
+                t.join()
+        return [r if r is not None else _failed(E.RUNTIME_ERROR, "the sandbox returned no result") for r in results]
+    except Exception as exc:  # noqa: BLE001 - the caller must never see an exception
+        return [_failed(E.RUNTIME_ERROR, f"sandbox failure: {type(exc).__name__}: {exc}") for _ in programs]
+
+
+def execute(code: str, rows: int = 8, cols: int = 8, limits: Limits | None = None) -> Execution:
+    """Run one program on a fresh rows x cols board (see the package docstring)."""
+    return execute_many([code], rows, cols, limits, workers=1)[0]

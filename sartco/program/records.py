@@ -1,0 +1,58 @@
+"""The records of `sartco.program`: budgets in, results out (frozen, slotted, JSON-friendly)."""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from sartco.world import ErrorCode
+
+
+@dataclass(frozen=True, slots=True)
+class Limits:
+    """Budgets for one program. Exhausting one gives `timeout` (steps, wall time) or
+    `resource_limit` (everything else).
+
+    steps       loop iterations + function/lambda calls + comprehension items, counted by
+                instrumentation (a C-level counter call inserted into every loop body,
+                function body, lambda and comprehension)
+    depth       nested Python calls the program may make (recursion)
+    length      longest range / list / tuple / str / bytes a checked operation may create
+    int_bits    largest integer (in bits) that `*`, `**` and `<<` may create
+    wall_time   seconds per program, enforced by killing the worker process (catches loops
+                inside C code that no Python-level counter sees)
+    memory      bytes of address space the worker may add (RLIMIT_AS)
+    source      characters of source text
+    """
+
+    steps: int = 1_000_000
+    depth: int = 200
+    length: int = 1_000_000
+    int_bits: int = 65_536
+    wall_time: float = 2.0
+    memory: int = 512 * 1024 * 1024
+    source: int = 100_000
+
+    def as_list(self) -> list:
+        return [self.steps, self.depth, self.length, self.int_bits, self.wall_time, self.memory, self.source]
+
+
+@dataclass(frozen=True, slots=True)
+class Execution:
+    """What running one program did. `cells` is the result board in canonical form, also when
+    the program failed part way (the board so far); `puts` counts the pieces placed on it."""
+
+    ok: bool
+    error: ErrorCode | None
+    message: str
+    cells: dict = field(default_factory=dict)
+    puts: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class Comparison:
+    """A built board against its target: execution success, mismatch category, cell P/R/F1."""
+
+    es: int
+    category: ErrorCode | None
+    precision: float
+    recall: float
+    f1: float
