@@ -23,6 +23,9 @@ code_bleu
     2. An empty (or all-whitespace) prediction scores 0.0; codebleu gives it 0.25 (its
        `theta * (dataflow or 1)` counts a data-flow score of 0 as 1; k4black/codebleu issue #59).
        Any other prediction keeps that quirk: a non-empty but unrelated answer can score 0.25.
+    3. A pathological answer whose syntax tree is too big for codebleu's quadratic sub-tree
+       listing (MAX_SEXP_WORK, 300x the longest published gold program) scores 0.0 with a reason
+       instead of taking seconds to minutes and gigabytes.
     An exception inside codebleu gives 0.0 with the reason in `CodeBleu.reason`, never a crash.
 
 Cost: see `python -m sartco.scores.metrics` (a small benchmark over the published gold programs).
@@ -88,6 +91,8 @@ def code_bleu_detail(pred: str, gold: str) -> CodeBleu:
 def _code_bleu(pred: str, gold: str) -> CodeBleu:
     try:
         return _compute(pred, gold)
+    except TooLarge as exc:
+        return CodeBleu(0.0, reason=str(exc))
     except Exception as exc:  # noqa: BLE001 - a scorer must not crash on a strange answer
         return CodeBleu(0.0, reason=f"codebleu failed: {type(exc).__name__}: {exc}"[:300])
 
@@ -140,6 +145,27 @@ def _compute(pred: str, gold: str) -> CodeBleu:
     return CodeBleu(float(score), float(ngram), float(weighted), float(syntax), float(dataflow))
 
 
+class TooLarge(ValueError):
+    """A program whose sub-tree list would be too big to build (see MAX_SEXP_WORK)."""
+
+
+# codebleu lists every sub-tree as its S-expression text, so its work and memory grow with the
+# sum over nodes of their depth: quadratic in a deeply nested answer ("x = 1+1+...": 2,000 terms
+# take 2.3 s, 30,000 would need gigabytes). The longest published gold program sums to 3,202;
+# above this budget a program is not scored (0.0 with a reason) instead of stalling the scorer.
+MAX_SEXP_WORK = 1_000_000
+
+
+def _check_size(root) -> None:
+    work, stack = 0, [(root, 1)]
+    while stack:
+        node, depth = stack.pop()
+        work += depth
+        if work > MAX_SEXP_WORK:
+            raise TooLarge(f"program too large or deeply nested for CodeBLEU (over {MAX_SEXP_WORK:,} node-depth units)")
+        stack.extend((child, depth + 1) for child in node.children)
+
+
 @dataclass(frozen=True, slots=True)
 class _Analysis:
     sexps: tuple[str, ...]       # every sub-tree with children, as codebleu lists them
@@ -161,6 +187,7 @@ def _analyse(code: str) -> _Analysis:
     parser = Parser()
     parser.language = language
     root = parser.parse(bytes(code, "utf8")).root_node
+    _check_size(root)
     sexps, stack = [], [root]
     while stack:  # codebleu's get_all_sub_trees, same order
         node = stack.pop()

@@ -121,10 +121,30 @@ def test_an_exception_inside_codebleu_scores_zero_with_its_reason(monkeypatch):
     assert detail.reason == "codebleu failed: RuntimeError: parser exploded"
 
 
-@pytest.mark.parametrize("pred", ["\x00\x01", "def f(:\n  '''", "(" * 500, "x = " + "+".join(["1"] * 3000), "é ü 中文"])
+@pytest.mark.parametrize("pred", ["\x00\x01", "def f(:\n  '''", "(" * 500, "x = " + "+".join(["1"] * 300), "é ü 中文",
+                                  "\n".join(f"put(board, 'nut', 'red', {i % 8}, 0)" for i in range(2000))],
+                         ids=["control", "unclosed", "parens", "long-sum", "unicode", "2000-puts"])
 def test_strange_answers_never_raise(pred):
     score = code_bleu(pred, OPTIMAL)
     assert 0.0 <= score <= 1.0
+
+
+def test_a_pathologically_nested_answer_is_refused_quickly():
+    import time
+
+    start = time.perf_counter()
+    detail = code_bleu_detail("x = " + "+".join(["1"] * 20000), OPTIMAL)
+    assert time.perf_counter() - start < 2.0  # codebleu itself would need minutes and gigabytes
+    assert detail.score == 0.0 and "too large or deeply nested" in detail.reason
+
+
+def test_every_published_gold_program_is_far_below_the_size_budget():
+    from tree_sitter import Parser
+
+    parser = Parser()
+    parser.language = metrics._resources()[6]
+    for code in _gold_programs():
+        metrics._check_size(parser.parse(code.encode()).root_node)  # raises TooLarge if not
 
 
 def test_the_number_is_the_codebleu_package_number(monkeypatch):
