@@ -39,31 +39,27 @@ REGULAR_VARIANTS = {"regular": ("repetition", "template"), "regular_hai": ("repe
 
 
 def _runner():
-    """execute(code) -> (ok, message, cells); compare(built, target) -> es."""
+    """run_all([code, ...]) -> [(ok, message, cells), ...]; same(built, target) -> 0/1."""
     try:
-        from sartco.program import compare, execute  # type: ignore[attr-defined]
+        from sartco.program import compare, execute_many
 
-        def run(code: str):
-            ex = execute(code, rows=8, cols=8)
-            return ex.ok, ex.message, ex.cells
+        def run_all(programs):
+            return [(ex.ok, ex.message, ex.cells) for ex in execute_many(programs, rows=8, cols=8)]
 
-        return run, (lambda built, target: int(compare(built, target).es)), "sartco.program"
+        return run_all, (lambda built, target: int(compare(built, target).es)), "sartco.program"
     except ImportError:
         from sartco.world import Board, put
 
         def run(code: str):
-            board = Board(8, 8)
-            ns = {"put": put, "init_board": Board, "board": board}
+            ns = {"put": put, "init_board": Board, "board": Board(8, 8)}
             try:
                 exec(compile(code, "<follower>", "exec"), ns)  # noqa: S102 - the follower's own code
             except Exception as exc:  # noqa: BLE001
                 return False, f"{type(exc).__name__}: {exc}", ns["board"].cells()
             return True, "", ns["board"].cells()
 
-        def same(built, target):
-            return int(built == target)
-
-        return run, same, "private runner (sartco.world)"
+        return (lambda programs: [run(c) for c in programs]), (lambda b, t: int(b == t)), \
+            "private runner (sartco.world)"
 
 
 def samples(doc):
@@ -84,8 +80,9 @@ def base_file(name: str) -> str:
 
 def evaluate(data: Path = DEFAULT_DATA, files: list[str] | None = None):
     """{(file, variant): {"n", "es", "parsed", "failures": [...]}} over the published files."""
-    run, same, how = _runner()
+    run_all, same, how = _runner()
     results: dict[tuple[str, str], dict] = {}
+    pending = []  # (result row, sample id, texts, program, gold board), run in one batch
     for path in sorted((data / "published").glob("*.json")):
         name = path.stem
         if files and name not in files:
@@ -111,11 +108,13 @@ def evaluate(data: Path = DEFAULT_DATA, files: list[str] | None = None):
                     continue
                 r["parsed"] += 1
                 program = (context + "\n" if regular else "") + "board = init_board(8, 8)\n" + code
-                ok, message, cells = run(program)
-                if ok and same(cells, gold[sid]):
-                    r["es"] += 1
-                else:
-                    r["failures"].append((sid, "run" if not ok else "board", message, texts))
+                pending.append((r, sid, texts, program, gold[sid]))
+    outcomes = run_all([program for *_, program, _ in pending])
+    for (r, sid, texts, _, target), (ok, message, cells) in zip(pending, outcomes):
+        if ok and same(cells, target):
+            r["es"] += 1
+        else:
+            r["failures"].append((sid, "run" if not ok else "board", message, texts))
     return results, how
 
 
