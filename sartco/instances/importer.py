@@ -48,30 +48,7 @@ from typing import Any, Iterator
 
 from sartco.cli import UserError
 
-try:
-    from sartco.program import execute
-except ImportError:  # TEMPORARY until sartco.program lands: a bare exec with the world's put
-    from types import SimpleNamespace
-
-    from sartco.world import Board, WorldError, put
-
-    def execute(code: str, rows: int = 8, cols: int = 8):
-        made: list = []
-
-        def init_board(r: int = rows, c: int = cols) -> Board:
-            made.append(Board(r, c))
-            return made[-1]
-
-        try:
-            exec(compile(code, "<gold>", "exec"), {"put": put, "init_board": init_board})
-        except WorldError as exc:
-            cells = made[-1].cells() if made else {}
-            return SimpleNamespace(ok=False, error=exc.code, message=exc.message, cells=cells, puts=0)
-        except Exception as exc:  # noqa: BLE001
-            cells = made[-1].cells() if made else {}
-            return SimpleNamespace(ok=False, error=type(exc).__name__, message=str(exc), cells=cells, puts=0)
-        board = made[-1]
-        return SimpleNamespace(ok=True, error=None, message="", cells=board.cells(), puts=board.puts)
+from sartco.program import execute_many
 
 FORMAT = "sartco-dataset/1"
 FILE_RE = re.compile(
@@ -303,15 +280,17 @@ class Importer:
                 gold = self.gold_boards(path.name)
                 if gold is None:
                     self.defect("no_gold_board", path.name, None, "no gold_boards file; targets are not checked against the oracle")
+                pending = []
                 for sample_path, sample in samples:
                     try:
-                        record = self.base_record(path.name, m, board_type, object_type, sample_path, sample, gold)
+                        record = self.base_record(path.name, m, board_type, object_type, sample_path, sample)
                     except SampleError as exc:
                         self.defect("malformed_sample", path.name, sample_path, str(exc))
                         continue
-                    if record is not None:
-                        self.records[out].append(record)
-                        self.by_sample[(path.name, sample_path)] = (record, _fingerprint(sample, ()))
+                    pending.append((record, _fingerprint(sample, ())))
+                for record, fingerprint in self.build_targets(path.name, pending, gold):
+                    self.records[out].append(record)
+                    self.by_sample[(path.name, record["provenance"]["sample"])] = (record, fingerprint)
             else:
                 base = f"{m['prefix']}_{m['split']}.json"
                 source = SOURCES[m["variant"]]
@@ -327,7 +306,8 @@ class Importer:
 
     # -- one sample of a base (template) file
     def base_record(self, file: str, m: re.Match, board_type: str, object_type: str, sample_path: str,
-                    sample: Any, gold: dict[str, Cells] | None) -> dict | None:
+                    sample: Any) -> dict:
+        """The record of one sample, its target still None (build_targets runs the gold code)."""
         rid = f"{file.removesuffix('.json')}/{sample_path}"
         simple = board_type == "simple"
         _need(sample, SIMPLE_KEYS if simple else REGULAR_KEYS)
@@ -381,28 +361,6 @@ class Importer:
         if letters != combo:
             self.defect("combo_mismatch", file, sample_path, f"combo_name {combo!r} but the shapes spell {letters!r}", rid)
 
-        # the target: what the gold programs build, checked against the authors' boards
-        target = None
-        gold_cells = gold.get(sample_path) if gold is not None else None
-        if gold is not None and gold_cells is None:
-            self.defect("no_gold_board", file, sample_path, "no board for this sample in gold_boards", rid)
-        for style, code in styles.items():
-            ex = execute(code["total_code"], rows=rows, cols=cols)
-            self.checked["run"] += 1
-            if not ex.ok:
-                self.defect("gold_error", file, sample_path, f"{style} gold code fails: {ex.error}: {ex.message}; sample left out", rid)
-                return None
-            if gold_cells is not None:
-                if ex.cells != gold_cells:
-                    self.defect("gold_mismatch", file, sample_path, f"{style} gold code builds another board than gold_boards; sample left out", rid)
-                    return None
-                self.checked["built_gold"] += 1
-            if target is None:
-                target = ex.cells
-            elif ex.cells != target:
-                self.defect("gold_mismatch", file, sample_path, f"{style} gold code builds another board than first_order; sample left out", rid)
-                return None
-
         return {
             "id": rid,
             "board_type": board_type,
@@ -419,11 +377,51 @@ class Importer:
             "placement": placement,
             "occupied_rows": occupied[0],
             "occupied_cols": occupied[1],
-            "target": target,
+            "target": None,
             "code": styles,
             "instructions": instructions,
             "provenance": {"source": "published", "file": file, "sample": sample_path},
         }
+
+    def build_targets(self, file: str, pending: list[tuple[dict, str]], gold: dict[str, Cells] | None):
+        """Run every gold program of a file (in sartco.program's workers, one batch), keep the
+        records whose programs all build the same board, the oracle's when there is one."""
+        jobs: dict[tuple[int, int], list[tuple[int, str, str]]] = {}
+        for i, (record, _) in enumerate(pending):
+            for style, code in record["code"].items():
+                jobs.setdefault((record["rows"], record["cols"]), []).append((i, style, code["total_code"]))
+        results: dict[tuple[int, str], Any] = {}
+        for (rows, cols), group in jobs.items():
+            for (i, style, _), ex in zip(group, execute_many([code for _, _, code in group], rows, cols)):
+                results[(i, style)] = ex
+        for i, (record, fingerprint) in enumerate(pending):
+            sample, rid = record["provenance"]["sample"], record["id"]
+            gold_cells = gold.get(sample) if gold is not None else None
+            if gold is not None and gold_cells is None:
+                self.defect("no_gold_board", file, sample, "no board for this sample in gold_boards", rid)
+            target, failed = None, False
+            for style in record["code"]:
+                ex = results[(i, style)]
+                self.checked["run"] += 1
+                if not ex.ok:
+                    self.defect("gold_error", file, sample, f"{style} gold code fails: {ex.error}: {ex.message}; sample left out", rid)
+                    failed = True
+                    break
+                if gold_cells is not None:
+                    if ex.cells != gold_cells:
+                        self.defect("gold_mismatch", file, sample, f"{style} gold code builds another board than gold_boards; sample left out", rid)
+                        failed = True
+                        break
+                    self.checked["built_gold"] += 1
+                if target is None:
+                    target = ex.cells
+                elif ex.cells != target:
+                    self.defect("gold_mismatch", file, sample, f"{style} gold code builds another board than the first style's; sample left out", rid)
+                    failed = True
+                    break
+            if not failed:
+                record["target"] = target
+                yield record, fingerprint
 
     @staticmethod
     def template_simple(dialogues: dict) -> dict:
