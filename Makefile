@@ -1,0 +1,32 @@
+# SARTCo bench: the two commands of the README are `make main` and `make test`.
+PYTHON ?= python3
+VENV   ?= .venv
+BIN    := $(VENV)/bin
+STAMP  := $(VENV)/.installed
+RESULTS ?= results
+
+.PHONY: install main test local clean-results
+
+$(STAMP): pyproject.toml
+	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
+	$(BIN)/python -m pip install -q --upgrade pip
+	$(BIN)/python -m pip install -q -e ".[dev]"
+	touch $(STAMP)
+
+install: $(STAMP)
+
+## The main job: both games with the built-in players over the test split, scored, transcribed,
+## evaluated and reported; ends by printing the results table.
+main: $(STAMP)
+	PATH="$(abspath $(BIN)):$$PATH" RESULTS="$(RESULTS)" bash scripts/main.sh
+
+## Unit, property and end-to-end tests.
+test: $(STAMP)
+	$(BIN)/python -m pytest
+
+## A real small model (Gemma 3 270M on a local llama.cpp server) over a slice of both games.
+local: $(STAMP)
+	PATH="$(abspath $(BIN)):$$PATH" bash scripts/local_model.sh
+
+clean-results:
+	rm -rf $(RESULTS)
