@@ -77,10 +77,14 @@ _SPEC_NUMBER = re.compile(r"\d+")
 class Forbidden(Exception):
     """A construct outside the allowed subset (found before running, or at run time)."""
 
+    position = (0, 0)
+
 
 def _fail(node, text: str):
     line = getattr(node, "lineno", None)
-    raise Forbidden(f"line {line}: {text}" if line else text)
+    exc = Forbidden(f"line {line}: {text}" if line else text)
+    exc.position = (line or 0, getattr(node, "col_offset", 0))
+    raise exc
 
 
 def _name(node, name: str, store: bool):
@@ -230,60 +234,71 @@ def _child(child, wrapped):
 
 
 def instrument(tree: ast.Module) -> ast.Module:
-    """Check every node (raise Forbidden on the first offence) and instrument in place.
+    """Check every node and instrument in place; raise the Forbidden that comes first in the text.
 
     One iterative pass (no recursion limit to hit); leaves (names, constants) are handled
     where they are met, because they make up two thirds of a typical tree."""
     todo = [tree]
     wrapped: set[int] = set()
-    ast_type, name_type, const_type, load_type = ast.AST, ast.Name, ast.Constant, ast.Load
     seen_loads: set[str] = set()  # names already checked in a load context
+    offences: list[Forbidden] = []
     while todo:
         node = todo.pop()
-        t = type(node)
-        fields = FIELDS.get(t)
-        if fields is None:
-            what = WHAT.get(t) or t.__name__
-            _fail(node, f"{what} is not allowed")
-        rule = RULES.get(t)
-        if rule is not None:
-            rule(node)
-        for field in fields:
-            value = getattr(node, field)
-            if type(value) is list:
-                for i, child in enumerate(value):
-                    ct = type(child)
-                    if ct is const_type or child is None:
-                        continue
-                    if ct is name_type:
-                        if type(child.ctx) is load_type:
-                            if child.id not in seen_loads:
-                                _name(child, child.id, False)
-                                seen_loads.add(child.id)
-                        else:
-                            _name(child, child.id, True)
-                        continue
-                    new = _child(child, wrapped)
-                    if new is not child:
-                        value[i] = new
-                    todo.append(new)
-            elif value is not None and isinstance(value, ast_type):
-                ct = type(value)
-                if ct is const_type:
+        try:
+            _visit(node, todo, wrapped, seen_loads)
+        except Forbidden as exc:  # keep looking: report the offence that comes first in the text
+            offences.append(exc)
+    if offences:
+        raise min(offences, key=lambda exc: exc.position)
+    return tree
+
+
+def _visit(node, todo, wrapped, seen_loads):
+    """Check one node and its leaf children; instrument; queue the other children."""
+    ast_type, name_type, const_type, load_type = ast.AST, ast.Name, ast.Constant, ast.Load
+    t = type(node)
+    fields = FIELDS.get(t)
+    if fields is None:
+        what = WHAT.get(t) or t.__name__
+        _fail(node, f"{what} is not allowed")
+    rule = RULES.get(t)
+    if rule is not None:
+        rule(node)
+    for field in fields:
+        value = getattr(node, field)
+        if type(value) is list:
+            for i, child in enumerate(value):
+                ct = type(child)
+                if ct is const_type or child is None:
                     continue
                 if ct is name_type:
-                    if type(value.ctx) is load_type:
-                        if value.id not in seen_loads:
-                            _name(value, value.id, False)
-                            seen_loads.add(value.id)
+                    if type(child.ctx) is load_type:
+                        if child.id not in seen_loads:
+                            _name(child, child.id, False)
+                            seen_loads.add(child.id)
                     else:
-                        _name(value, value.id, True)
+                        _name(child, child.id, True)
                     continue
-                new = _child(value, wrapped)
-                if new is not value:
-                    setattr(node, field, new)
+                new = _child(child, wrapped)
+                if new is not child:
+                    value[i] = new
                 todo.append(new)
-    return tree
+        elif value is not None and isinstance(value, ast_type):
+            ct = type(value)
+            if ct is const_type:
+                continue
+            if ct is name_type:
+                if type(value.ctx) is load_type:
+                    if value.id not in seen_loads:
+                        _name(value, value.id, False)
+                        seen_loads.add(value.id)
+                else:
+                    _name(value, value.id, True)
+                continue
+            new = _child(value, wrapped)
+            if new is not value:
+                setattr(node, field, new)
+            todo.append(new)
 
 
 def prepare(source: str):

@@ -212,7 +212,7 @@ def compile_program(source: str, cache: bool = True) -> tuple:
     except Forbidden as exc:
         result = (None, E.FORBIDDEN, str(exc))
     except SyntaxError as exc:
-        result = (None, E.SYNTAX_ERROR, f"line {exc.lineno}: {exc.msg}")
+        result = (None, E.SYNTAX_ERROR, f"line {exc.lineno}: {exc.msg}" if exc.lineno else str(exc.msg))
     except (ValueError, UnicodeError) as exc:  # e.g. null bytes, lone surrogates
         result = (None, E.SYNTAX_ERROR, str(exc))
     except (RecursionError, MemoryError) as exc:

@@ -1,0 +1,194 @@
+"""A corpus of hostile programs: each ends in its expected code, and afterwards the sandbox
+still works, nothing outside a temporary folder was touched and no worker process is left.
+
+The assertions are about outcomes, never about durations: the one program that needs the hard
+kill (a loop inside C code) gets a 1 s wall-time budget, everything else a generous 20 s.
+"""
+import os
+from pathlib import Path
+
+import pytest
+
+from sartco.program import Limits, execute, shutdown
+from sartco.world import ErrorCode
+
+E = ErrorCode
+F, T, R = E.FORBIDDEN, E.TIMEOUT, E.RESOURCE_LIMIT
+GENEROUS = Limits(wall_time=20.0)
+HARD_KILL = Limits(wall_time=1.0)
+SMALL_MEMORY = Limits(wall_time=20.0, memory=128 * 1024 * 1024)
+CANARY = "CANARY"  # replaced by the canary file's path
+
+HOSTILE = [
+    # escapes through attributes and format strings
+    ("class via tuple", "().__class__", F, None),
+    ("subclasses walk", "[].__class__.__base__.__subclasses__()", F, None),
+    ("builtin self", "print.__self__", F, None),
+    ("put globals", "put.__globals__['__builtins__']", F, None),
+    ("lambda globals", "(lambda: 0).__globals__", F, None),
+    ("lambda code", "f = lambda: 0\nc = f.__code__", F, None),
+    ("generator frame", "g = (i for i in range(3))\nfr = g.gi_frame", F, None),
+    ("generator frame in loop", "g = (i for i in [1])\nfor f in [g.gi_frame]: pass", F, None),
+    ("f-string attribute", "x = 1\ns = f'{x.__class__}'", F, None),
+    ("str.format walk", "s = '{0.__class__}'.format(1)", F, None),
+    ("str.format plain", "s = '{}'.format(1)", F, None),
+    ("str.format on a name", "fmt = '{0.__init__.__globals__}'\nfmt.format(put)", F, None),
+    ("printf formatting", "s = '%s' % (1,)", F, None),
+    ("printf width bomb", "s = '%999999999d' % 1", F, None),
+    ("f-string width bomb", "s = f'{1:999999999}'", F, None),
+    ("f-string dynamic spec", "s = f'{1:{10**9}}'", F, None),
+    ("board internals", "board.stacks[0][0].append(('screw', 'red'))", F, None),
+    ("attribute store", "board.rows = 100", F, None),
+    ("method on a type", "s = str.lower('A')", F, None),
+    # Unicode names, imports, builtins
+    ("full-width eval", "ｅｖａｌ('1+1')", F, None),
+    ("full-width import", "__ｉｍｐｏｒｔ__('os')", F, None),
+    ("full-width keyword", "ｉｍｐｏｒｔ os", E.SYNTAX_ERROR, None),
+    ("open file", "f = open('/etc/passwd')", F, None),
+    ("write canary", "f = open(CANARY, 'w')", F, None),
+    ("import", "import os\nos.system('touch ' + CANARY)", F, None),
+    ("from import", "from os import system", F, None),
+    ("builtins dict", "__builtins__['eval']('1')", F, None),
+    ("dunder import", "__import__('os')", F, None),
+    ("getattr", "getattr(board, 'stacks')", F, None),
+    ("setattr", "setattr(board, 'rows', 1)", F, None),
+    ("type", "t = type(board)", F, None),
+    ("object", "o = object()", F, None),
+    ("eval", "eval('1')", F, None),
+    ("exec", "exec('x = 1')", F, None),
+    ("compile", "compile('1', '', 'exec')", F, None),
+    ("globals", "g = globals()", F, None),
+    ("vars", "v = vars()", F, None),
+    ("locals", "v = locals()", F, None),
+    ("dunder kwarg", "d = dict(__class__=1)", F, None),
+    ("underscore name", "_ = 1", F, None),
+    ("rebind put", "def put(*a):\n    pass", F, None),
+    ("rebind builtin", "range = 5", F, None),
+    ("rebind via parameter", "def f(len):\n    return len", F, None),
+    # statements outside the subset
+    ("class", "class A:\n    pass", F, None),
+    ("try swallows timeout", "try:\n    while True:\n        pass\nexcept BaseException:\n    pass", F, None),
+    ("with", "with open(CANARY) as f:\n    pass", F, None),
+    ("global", "def f():\n    global board\n    board = 1", F, None),
+    ("nonlocal", "def f():\n    x = 1\n    def g():\n        nonlocal x\n    return g", F, None),
+    ("yield", "def f():\n    yield 1", F, None),
+    ("async", "async def f():\n    pass", F, None),
+    ("del", "del board", F, None),
+    ("raise", "raise SystemExit", F, None),
+    ("match", "match 1:\n    case 1:\n        pass", F, None),
+    ("decorator", "def d(f):\n    return f\n@d\ndef g():\n    pass", F, None),
+    # budgets: time
+    ("while true", "while True:\n    pass", T, None),
+    ("self-extending list", "L = [1]\nfor x in L:\n    L.append(x)", T, None),
+    ("exponential lambda", "f = lambda n: n and f(n - 1) + f(n - 1)\nf(60)", T, None),
+    ("comprehension product", "n = [0 for a in range(10**5) for b in range(10**5)]", T, None),
+    ("loop in C code", "x = sum(sum(range(10**6)) for i in range(10**6))", T, HARD_KILL),
+    # budgets: depth, length, integers, memory, source
+    ("deep recursion", "def f(n):\n    return f(n + 1)\nf(0)", R, None),
+    ("deep repr", "x = []\nfor i in range(100000):\n    x = [x]\ns = str(x)", R, None),
+    ("list bomb", "x = [0] * 10**9", R, None),
+    ("string bomb", "x = 'a' * 10**9", R, None),
+    ("reversed string bomb", "x = 10**9 * 'a'", R, None),
+    ("string doubling", "s = 'a'\nwhile True:\n    s = s + s", R, None),
+    ("f-string doubling", "s = 'a'\nwhile True:\n    s = f'{s}{s}'", R, None),
+    ("list doubling", "L = [1]\nwhile True:\n    L += L", R, None),
+    ("extend doubling", "L = [1]\nwhile True:\n    L.extend(L)", R, None),
+    ("starred doubling", "L = [1]\nwhile True:\n    L = [*L, *L]", R, None),
+    ("item doubling", "d = {'k': 'a'}\nwhile True:\n    d['k'] *= 2", R, None),
+    ("sum of lists", "L = [[0] * 10**6] * 10**6\nx = sum(L, [])", R, None),
+    ("star args bomb", "print(*[0] * 10**9)", R, None),
+    ("integer tower", "x = 10**10**10", R, None),
+    ("integer power", "x = 2**99999999", R, None),
+    ("integer shift", "x = 1 << 10**10", R, None),
+    ("integer squaring", "x = 3\nwhile True:\n    x = x * x", R, None),
+    ("float overflow", "x = 2.0 ** 10**9", R, None),
+    ("huge range", "for i in range(10**12):\n    pass", R, None),
+    ("huge range object", "n = len(range(10**30))", R, None),
+    ("round bomb", "x = round(1, -10**9)", R, None),
+    ("memory bomb", "x = [list(range(10**6)) for i in range(1000)]", R, SMALL_MEMORY),
+    ("huge source", "x = 1\n" * 60_000, R, None),
+    ("deep nesting", "x = " + "-" * 20_000 + "1", R, None),
+    ("nested parentheses", "x = " + "(" * 1000 + ")" * 1000, E.SYNTAX_ERROR, None),
+    ("null byte", "x = 1\x00", E.SYNTAX_ERROR, None),
+    # a failing program keeps the board built so far
+    ("timeout keeps board", "put(board, 'washer', 'red', 0, 0)\nwhile True:\n    pass", T, None),
+]
+
+
+def _children():
+    """(pid, state, cmdline) of this process's child processes, from /proc."""
+    out = []
+    for entry in Path("/proc").iterdir():
+        if not entry.name.isdigit():
+            continue
+        try:
+            status = (entry / "status").read_text()
+            cmdline = (entry / "cmdline").read_bytes().replace(b"\0", b" ").decode(errors="replace")
+        except OSError:
+            continue
+        fields = dict(line.split(":", 1) for line in status.splitlines() if ":" in line)
+        if int(fields.get("PPid", "0").strip()) == os.getpid():
+            out.append((int(entry.name), fields.get("State", "").strip()[:1], cmdline))
+    return out
+
+
+@pytest.fixture(scope="module")
+def canary(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("canary")
+    path = folder / "canary.txt"
+    path.write_text("untouched")
+    return path
+
+
+@pytest.fixture(scope="module")
+def corpus(canary):
+    before = (canary.stat().st_mtime_ns, canary.parent.stat().st_mtime_ns, sorted(os.listdir(canary.parent)))
+    shutdown()  # start from no workers: execute() then uses exactly one
+    results, live = {}, []
+    for name, code, expected, limits in HOSTILE:
+        results[name] = execute(code.replace("CANARY", repr(str(canary))), limits=limits or GENEROUS)
+        live.append(len([c for c in _children() if "sartco.program.worker" in c[2]]))
+    after = (canary.stat().st_mtime_ns, canary.parent.stat().st_mtime_ns, sorted(os.listdir(canary.parent)))
+    return results, before, after, live
+
+
+def test_corpus_is_big_enough():
+    assert len(HOSTILE) >= 40
+    assert len({name for name, *_ in HOSTILE}) == len(HOSTILE)
+
+
+@pytest.mark.parametrize("name,code,expected,limits", HOSTILE, ids=[h[0] for h in HOSTILE])
+def test_hostile_program_ends_in_expected_code(corpus, name, code, expected, limits):
+    ex = corpus[0][name]
+    assert (ex.ok, ex.error) == (False, expected), ex.message
+    assert ex.message
+
+
+def test_failed_program_keeps_board_so_far(corpus):
+    assert corpus[0]["timeout keeps board"].cells == {"0:0": [["washer", "red"]]}
+
+
+def test_after_corpus_benign_program_builds_exact_board(corpus):
+    ex = execute("board = init_board(8, 8)\nfor c in range(3):\n    put(board, 'washer', 'red', 7, c)\n"
+                 "put(board, 'bridge-h', 'blue', 7, 0)")
+    assert ex.ok, ex.message
+    assert ex.cells == {"7:0": [["washer", "red"], ["bridge-h", "blue"]],
+                        "7:1": [["washer", "red"], ["bridge-h", "blue"]],
+                        "7:2": [["washer", "red"]]}
+    assert ex.puts == 4
+
+
+def test_after_corpus_nothing_was_touched(corpus, canary):
+    _, before, after, _ = corpus
+    assert before == after
+    assert canary.read_text() == "untouched"
+
+
+def test_after_corpus_no_process_left_over(corpus):
+    _, _, _, live = corpus
+    assert max(live) <= 1, "killed workers are reaped and replaced, never piled up"
+    assert not [c for c in _children() if c[1] == "Z"], "no zombie children"
+    shutdown()
+    assert not [c for c in _children() if "sartco.program.worker" in c[2]]
+    assert execute("put(board, 'nut', 'green', 1, 1)").cells == {"1:1": [["nut", "green"]]}  # restarts
+    shutdown()
