@@ -7,7 +7,7 @@ from pathlib import Path
 import pytest
 
 from sartco.follower import FollowError, follow, follow_turn, read_placements, try_follow
-from sartco.world import Board, put
+from sartco.program import execute
 
 REPO = Path(__file__).resolve().parents[1]
 DATA = REPO.parent / "shared" / "sartco-data"
@@ -22,10 +22,11 @@ def _eval_tool():
 
 
 def build(code: str, context: str = "") -> dict:
-    """Run follower code the way the games do: the given function, a fresh board, the code."""
-    ns = {"put": put, "init_board": Board}
-    exec(context + "\nboard = init_board(8, 8)\n" + code, ns)  # noqa: S102 - our own follower's code
-    return ns["board"].cells()
+    """Run follower code the way the games do (through sartco.program): the given function, a
+    fresh board, the code; it must run without error."""
+    ex = execute(context + "\nboard = init_board(8, 8)\n" + code)
+    assert ex.ok, f"{ex.error}: {ex.message}"
+    return ex.cells
 
 
 # --- the published template instructions -------------------------------------------------------------

@@ -1,10 +1,9 @@
 """Regular boards: an arrangement instruction (+ the given object function) -> the anchors of the object."""
 from __future__ import annotations
 
-import ast
 import re
 
-from ..world.components import BRIDGES
+from ..world.components import COLORS
 from . import parse as p
 from .parse import Arrangement, FollowError
 
@@ -16,35 +15,30 @@ def function_name(context: str) -> str | None:
     return m.group(1) if m else None
 
 
-def footprint(context: str, name: str | None, n_colors: int) -> Cells | None:
-    """The cells the given object function covers when called at (0, 0), relative to its anchor.
+def footprint(context: str, name: str | None, n_colors: int, rows: int = 8, cols: int = 8) -> Cells | None:
+    """The cells the given object function covers, relative to its anchor.
 
-    The follower reads the object function the way a model would: it calls it once on a recording
-    board (no world rules, no real board). Any failure just means "unknown" (None).
+    The follower reads the object function the way a model would try it out: it runs the function
+    once through sartco.program (the only place where code from outside runs) on a scratch board
+    with room on every side, anchored in its middle, and reads the covered cells from the built
+    board. Any failure just means "unknown" (None).
     """
-    if not context or not name or "import" in context or "__" in context:
+    if not context or not name:
         return None
-    try:
-        tree = ast.parse(context)
-    except SyntaxError:
-        return None
-    if any(isinstance(node, (ast.While, ast.Import, ast.ImportFrom, ast.Global)) for node in ast.walk(tree)):
-        return None
-    cells: set[tuple[int, int]] = set()
+    from sartco.program import execute  # deferred: the grammar works without a worker process
 
-    def put(board, shape, color, x, y):
-        dx, dy = BRIDGES.get(shape, (0, 0))
-        cells.update({(x, y), (x + dx, y + dy)})
-
-    safe = {"zip": zip, "range": range, "len": len, "enumerate": enumerate, "list": list, "tuple": tuple}
-    namespace = {"__builtins__": safe, "put": put}
-    try:
-        exec(compile(tree, "<object function>", "exec"), namespace)  # noqa: S102 - the game's own function
-        namespace[name](None, ["red"] * max(n_colors, 1), 0, 0)
-    except Exception:  # noqa: BLE001 - an unreadable function just gives no footprint
+    pad = max(rows, cols)  # an object may reach up to a board's size away from its anchor
+    size = min(2 * pad + max(rows, cols), 64)
+    colors = [COLORS[i % len(COLORS)] for i in range(max(n_colors, 1))]
+    program = (f"{context.strip()}\nboard = init_board({size}, {size})\n"
+               f"{name}(board, {colors!r}, {pad}, {pad})\n")
+    ex = execute(program, rows=size, cols=size)
+    if not ex.ok or not ex.cells:
         return None
-    if not cells or not all(isinstance(c, int) for cell in cells for c in cell):
-        return None
+    cells = set()
+    for key in ex.cells:
+        x, y = map(int, key.split(":"))
+        cells.add((x - pad, y - pad))
     return frozenset(cells)
 
 
@@ -59,7 +53,7 @@ def arrange(text: str, context: str = "", rows: int = 8, cols: int = 8) -> Arran
     kind, m = p.arrangement_kind(text)
     colors = p.colors_of(text)
     name = function_name(context) or p.regular_name(text)
-    cells = footprint(context, function_name(context), len(colors))
+    cells = footprint(context, function_name(context), len(colors), rows, cols)
     size = p.size_of(text) or (_span(cells) if cells else (1, 1))
     h, w = size
     if cells is None:
