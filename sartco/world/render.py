@@ -39,7 +39,9 @@ FILL = {"red": "#d62728", "green": "#2ca02c", "blue": "#1f77b4", "yellow": "#f2c
 CELL = 44
 
 
-def _piece_svg(shape: str, color: str, x: float, y: float, size: float) -> str:
+def _piece_svg(shape: str, color: str, x: float, y: float, size: float, cell: tuple[float, float]) -> str:
+    """One piece inset in its cell; a bridge reaches the cell's edges along its axis, so the two
+    halves of a bridge join into one bar across the cell border."""
     fill = FILL.get(color, "#888888")
     cx, cy, h = x + size / 2, y + size / 2, size / 2
     if shape == "washer":  # a diamond
@@ -52,8 +54,8 @@ def _piece_svg(shape: str, color: str, x: float, y: float, size: float) -> str:
         return f'<circle cx="{cx}" cy="{cy}" r="{h * .8:.1f}" fill="{fill}" stroke="#222"/>'
     if shape in ("bridge-h", "bridge-v"):  # a bar along the bridge
         if shape == "bridge-h":
-            return f'<rect x="{x}" y="{cy - h * .35:.1f}" width="{size}" height="{h * .7:.1f}" fill="{fill}" stroke="#222"/>'
-        return f'<rect x="{cx - h * .35:.1f}" y="{y}" width="{h * .7:.1f}" height="{size}" fill="{fill}" stroke="#222"/>'
+            return f'<rect x="{cell[0]}" y="{cy - h * .35:.1f}" width="{CELL}" height="{h * .7:.1f}" fill="{fill}" stroke="{fill}"/>'
+        return f'<rect x="{cx - h * .35:.1f}" y="{cell[1]}" width="{h * .7:.1f}" height="{CELL}" fill="{fill}" stroke="{fill}"/>'
     return f'<text x="{cx}" y="{cy}" font-size="9" text-anchor="middle">{escape(shape[:6])}</text>'
 
 
@@ -67,7 +69,7 @@ def _grid_svg(cells: Cells, rows: int, cols: int, ox: float, title: str, marked:
             stack = cells.get(f"{r}:{c}", [])
             for level, (shape, color) in enumerate(stack):  # draw bottom to top, shrinking upwards
                 inset = 3 + level * 4.5
-                out.append(_piece_svg(shape, color, x + inset, y + inset, CELL - 2 * inset))
+                out.append(_piece_svg(shape, color, x + inset, y + inset, CELL - 2 * inset, (x, y)))
             if len(stack) > 1:
                 out.append(f'<text x="{x + CELL - 3}" y="{y + CELL - 3}" font-size="9" text-anchor="end">{len(stack)}</text>')
     return out
