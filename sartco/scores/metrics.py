@@ -28,7 +28,7 @@ code_bleu
        instead of taking seconds to minutes and gigabytes.
     An exception inside codebleu gives 0.0 with the reason in `CodeBleu.reason`, never a crash.
 
-Cost: see `python -m sartco.scores.metrics` (a small benchmark over the published gold programs).
+Cost: `python -m sartco.scores.bench_codebleu DATASET_DIR` times it on the gold programs of a dataset.
 The parsers are not the cost (a tree-sitter Parser is built in about 0.3 us; the Language object
 and the keyword list are built once here); the time goes into codebleu's own Python: removing
 comments with `tokenize`, the data-flow graph and the sub-tree lists, each done for both programs
@@ -39,11 +39,11 @@ results are memoised per (prediction, gold) pair as well.
 """
 from __future__ import annotations
 
-import logging
 import re
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
+from types import SimpleNamespace
 
 WEIGHTS = (0.25, 0.25, 0.25, 0.25)
 LANG = "python"
@@ -98,9 +98,9 @@ def _code_bleu(pred: str, gold: str) -> CodeBleu:
 
 
 @lru_cache(maxsize=1)
-def _resources():
+def _resources() -> SimpleNamespace:
     """codebleu's modules, the python Language and keyword list: built once per process."""
-    from codebleu import bleu, dataflow_match, syntax_match, weighted_ngram_match
+    from codebleu import bleu, dataflow_match, weighted_ngram_match
     from codebleu.codebleu import PACKAGE_DIR
     from codebleu.parser import DFG_python, remove_comments_and_docstrings
     from codebleu.utils import get_tree_sitter_language
@@ -109,20 +109,22 @@ def _resources():
     keywords = frozenset(
         line.strip() for line in (Path(PACKAGE_DIR) / "keywords" / f"{LANG}.txt").read_text(encoding="utf-8").splitlines()
     )
-    return bleu, weighted_ngram_match, syntax_match, dataflow_match, DFG_python, remove_comments_and_docstrings, language, keywords
+    return SimpleNamespace(bleu=bleu, weighted_ngram_match=weighted_ngram_match, dataflow_match=dataflow_match,
+                           dfg_python=DFG_python, strip_comments=remove_comments_and_docstrings,
+                           language=language, keywords=keywords)
 
 
 def _compute(pred: str, gold: str) -> CodeBleu:
     """calc_codebleu for one pair, step by step as in codebleu/codebleu.py 0.7.0."""
-    bleu, weighted_ngram_match, keywords = _resources()[0], _resources()[1], _resources()[-1]
+    cb = _resources()
     reference = gold.strip()
     hypothesis = pred.strip()
 
     ref_tokens = reference.split()
     hyp_tokens = hypothesis.split()
-    ngram = bleu.corpus_bleu([[ref_tokens]], [hyp_tokens])
-    weights = {token: 1 if token in keywords else 0.2 for token in ref_tokens}
-    weighted = weighted_ngram_match.corpus_bleu([[[ref_tokens, weights]]], [hyp_tokens])
+    ngram = cb.bleu.corpus_bleu([[ref_tokens]], [hyp_tokens])
+    weights = {token: 1 if token in cb.keywords else 0.2 for token in ref_tokens}
+    weighted = cb.weighted_ngram_match.corpus_bleu([[[ref_tokens, weights]]], [hyp_tokens])
 
     ref, cand = _analyse(reference), _analyse(hypothesis)
     # syntax match (codebleu syntax_match.corpus_syntax_match): reference sub-trees found among the
@@ -177,15 +179,15 @@ class _Analysis:
 def _analyse(code: str) -> _Analysis:
     """The per-program half of syntax and data-flow match: a pure function of the text, so
     memoised (a gold program is analysed once, however many answers are scored against it)."""
-    _, _, _, dataflow_match, dfg_python, strip_comments, language, _ = _resources()
+    cb = _resources()
     from tree_sitter import Parser
 
     try:
-        code = strip_comments(code, LANG)
+        code = cb.strip_comments(code, LANG)
     except Exception:  # noqa: BLE001 - as codebleu does
         pass
     parser = Parser()
-    parser.language = language
+    parser.language = cb.language
     root = parser.parse(bytes(code, "utf8")).root_node
     _check_size(root)
     sexps, stack = [], [root]
@@ -193,65 +195,6 @@ def _analyse(code: str) -> _Analysis:
         node = stack.pop()
         sexps.append(str(node))
         stack.extend(child for child in node.children if child.children)
-    graph = dataflow_match.get_data_flow(code, [parser, dfg_python])
+    graph = cb.dataflow_match.get_data_flow(code, [parser, cb.dfg_python])
     ordered = [(d[0], d[1], d[2], sorted(d[3]), d[4]) for d in graph]  # the one change: sorted
-    return _Analysis(tuple(sexps), frozenset(sexps), tuple(dataflow_match.normalize_dataflow(ordered)))
-
-
-def _benchmark(argv: list[str] | None = None) -> int:
-    """Time code_bleu per call on the published gold programs (gold against a shifted gold)."""
-    import argparse
-    import json
-    import statistics
-    import time
-
-    parser = argparse.ArgumentParser(description=_benchmark.__doc__)
-    parser.add_argument("dataset", type=Path, help="an imported dataset folder (sartco import)")
-    parser.add_argument("-n", type=int, default=1000)
-    args = parser.parse_args(argv)
-    from codebleu import calc_codebleu
-
-    programs = []
-    for path in sorted(args.dataset.glob("*_*_*.json")):
-        for record in json.loads(path.read_text()):
-            programs += [(path.stem, style, code["total_code"]) for style, code in record["code"].items()]
-    programs = programs[:: max(1, len(programs) // args.n)][: args.n]
-    pairs = [(programs[i][2], programs[(i + 7) % len(programs)][2]) for i in range(len(programs))]
-    logging.disable(logging.WARNING)
-
-    def timed(fn, pairs, before=None):
-        times = []
-        for pred, gold in pairs:
-            if before:
-                before(gold)
-            start = time.perf_counter()
-            fn(pred, gold)
-            times.append(time.perf_counter() - start)
-        return times
-
-    def cold(_gold):
-        _analyse.cache_clear()
-        _code_bleu.cache_clear()
-
-    def gold_seen(gold):  # the usual case in a benchmark run: the gold was scored before
-        _code_bleu.cache_clear()
-        _analyse(gold.strip())
-
-    # answers unlike any gold (a comment makes them new texts) so that only the gold is memoised
-    fresh = [(pred + f"\n# answer {i}", gold) for i, (pred, gold) in enumerate(pairs)]
-    runs = [
-        ("calc_codebleu (package)", timed(lambda p, g: calc_codebleu([g], [p], LANG, WEIGHTS)["codebleu"], pairs)),
-        ("code_bleu, nothing memoised", timed(code_bleu, pairs, cold)),
-        ("code_bleu, gold memoised", timed(code_bleu, fresh, gold_seen)),
-        ("code_bleu, same pair again", timed(code_bleu, fresh)),
-    ]
-    for name, times in runs:
-        print(f"{name:28} {len(times)} calls: mean {statistics.mean(times) * 1e3:.2f} ms, "
-              f"median {statistics.median(times) * 1e3:.2f} ms, max {max(times) * 1e3:.2f} ms")
-    lengths = [len(p) for p, _ in pairs]
-    print(f"programs: {len(pairs)}, {min(lengths)}..{max(lengths)} characters, mean {statistics.mean(lengths):.0f}")
-    return 0
-
-
-if __name__ == "__main__":
-    raise SystemExit(_benchmark())
+    return _Analysis(tuple(sexps), frozenset(sexps), tuple(cb.dataflow_match.normalize_dataflow(ordered)))

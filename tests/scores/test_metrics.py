@@ -10,7 +10,7 @@ import sys
 from pathlib import Path
 
 import pytest
-from hypothesis import given, settings
+from hypothesis import given
 from hypothesis import strategies as st
 
 from sartco.scores import metrics
@@ -142,7 +142,7 @@ def test_every_published_gold_program_is_far_below_the_size_budget():
     from tree_sitter import Parser
 
     parser = Parser()
-    parser.language = metrics._resources()[6]
+    parser.language = metrics._resources().language
     for code in _gold_programs():
         metrics._check_size(parser.parse(code.encode()).root_node)  # raises TooLarge if not
 
