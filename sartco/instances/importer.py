@@ -544,7 +544,10 @@ def import_published(src: Path, out: Path, gold_dir: Path | None) -> dict:
     importer.run()
     importer.check_instructions()
     files = {}
-    out.mkdir(parents=True, exist_ok=True)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise UserError(f"--out {out}: cannot create the folder: {exc.strerror}") from None
     for name in _ordered(importer.records):
         (out / name).write_text(_dump(importer.records[name]), encoding="utf-8")
         files[name] = len(importer.records[name])

@@ -245,3 +245,9 @@ def test_junk_rule(text, junk):
 ])
 def test_prefix_rule(text, cleaned):
     assert importer.PREFIX_RE.sub("", text, count=1) == cleaned
+
+
+def test_an_out_path_that_is_a_file_is_a_user_error(tmp_path, capsys):
+    (tmp_path / "taken").write_text("")
+    assert main(["import", str(PUBLISHED), "--out", str(tmp_path / "taken")]) == 2
+    assert "--out" in capsys.readouterr().err
