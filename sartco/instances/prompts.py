@@ -1,6 +1,6 @@
 """Prompts with the paper's structure, rendered from resources/templates/prompts/.
 
-builder_prompt(record, task, examples, sections=SECTIONS, source="template", step=0) -> str
+builder_prompt(record, task, examples, sections=SECTIONS, source="template", step=0, instruction=None) -> str
     The builder's (programmer's) prompt: system, environment, context, task, in-context samples,
     other details, in this order (each section removable for the ablations; 0..10 examples),
     then the item's instruction. Tasks (= code styles):
@@ -9,6 +9,10 @@ builder_prompt(record, task, examples, sections=SECTIONS, source="template", ste
       optimal_function   simple boards -> the optimal function + usage ("Function:", "Usage:")
       repetition         regular boards, the object function given in the context -> code that
                          repeats it ("Output:")
+    `instruction` replaces the record's own instruction (e.g. one written by a describer).
+gold_code(record, task) -> str
+    The gold answer's code in the task's style (first_order: the puts; function tasks: function
+    and usage; repetition: the repeating code), one line after another.
 builder_turn(record, step, source="template") -> str
     The message of a later step of a first_order episode: "Instruction: <step text>".
 describer_prompt(record) -> str
@@ -76,9 +80,10 @@ def _environment(rows: int = 8, cols: int = 8) -> str:
 
 
 def builder_prompt(record: dict, task: str, examples: Iterable[dict] = (), sections: Iterable[str] = SECTIONS,
-                   source: str = "template", step: int = 0) -> str:
+                   source: str = "template", step: int = 0, instruction: str | None = None) -> str:
     """The builder's prompt for one record (see the module doc). `examples` are records (e.g. from
-    select_examples); they always show template instructions and gold code of the task's style."""
+    select_examples); they always show template instructions and gold code of the task's style.
+    `instruction`, when given, is shown instead of the record's instruction from `source`."""
     _check_task(record, task)
     sections = tuple(sections)
     unknown = set(sections) - set(SECTIONS)
@@ -108,8 +113,15 @@ def builder_prompt(record: dict, task: str, examples: Iterable[dict] = (), secti
             parts.append(render("prompts/examples.j2", examples=pairs))
         elif section == "details":
             parts.append(render("prompts/details.j2", labels=list(LABELS[task])))
-    instruction = instruction_text(record, task, source, step if task == "first_order" else None)
+    if instruction is None:
+        instruction = instruction_text(record, task, source, step if task == "first_order" else None)
     return render("prompts/builder.j2", parts=parts, instruction=instruction).strip() + "\n"
+
+
+def gold_code(record: dict, task: str) -> str:
+    """The gold answer's code in the task's style (what exact match and CodeBLEU compare with)."""
+    _check_task(record, task)
+    return "\n".join(code for _, pairs in answer(record, task) for _, code in pairs)
 
 
 def builder_turn(record: dict, step: int, source: str = "template") -> str:
@@ -123,4 +135,5 @@ def describer_prompt(record: dict) -> str:
     return render("prompts/describer.j2", system=render("prompts/system.j2"),
                   environment=_environment(record["rows"], record["cols"]), name=record["combo_name"],
                   grid=grid_text(cells, record["rows"], record["cols"]),
-                  explanation=grid_explanation(cells)).strip() + "\n"
+                  explanation=grid_explanation(cells),
+                  regular=record["board_type"] == "regular").strip() + "\n"
