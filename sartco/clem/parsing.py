@@ -79,7 +79,11 @@ def _code_lines(lines: list[str]) -> list[str]:
     in_code = False      # the previous non-blank line was kept as code
     block_open = False   # a kept line opened a block (ends with ":"): indented lines below are its body
     open_brackets = 0    # brackets left open by kept lines: the next lines continue the statement
+    comments: list[str] = []  # comment lines waiting for the code they precede
     for line in lines:
+        if not in_code and _COMMENT_LINE.match(line):
+            comments.append(line.rstrip())
+            continue
         if not line.strip():
             if in_code:
                 kept.append("")
@@ -93,6 +97,8 @@ def _code_lines(lines: list[str]) -> list[str]:
             or (bool(_COMMENT_LINE.match(line)) and (in_code or indent > 0))
         )
         if is_code:
+            kept.extend(comments)
+            comments = []
             kept.append(line.rstrip())
             open_brackets = max(0, open_brackets + _balance(line))
             if line.split("#", 1)[0].rstrip().endswith(":"):
@@ -101,6 +107,7 @@ def _code_lines(lines: list[str]) -> list[str]:
         else:
             in_code = block_open = False
             open_brackets = 0
+            comments = []
     while kept and not kept[-1].strip():
         kept.pop()
     return kept

@@ -1,0 +1,92 @@
+"""Scripted answers through the real game loop (clemcore runner, game master, sandboxed
+execution, scorer): each wrong answer ends with the right outcome and error category."""
+# target: a red washer with a blue nut on top at row 7, column 3; a yellow bridge-h at (2, 5)-(2, 6)
+TARGET = {"2:5": [["bridge-h", "yellow"]], "2:6": [["bridge-h", "yellow"]],
+          "7:3": [["washer", "red"], ["nut", "blue"]]}
+GOLD = ["put(board, 'washer', 'red', 7, 3)", "put(board, 'nut', 'blue', 7, 3)",
+        "put(board, 'bridge-h', 'yellow', 2, 5)"]
+SINGLE = {"name": "scripted_single", "board_type": "simple", "object_type": "simple", "task": "first_order",
+          "source": "template", "split": "test", "ablation": None}
+
+
+def instance(game_id, script=None, turns=1):
+    code = "\n".join(GOLD)
+    inst = {"game_id": game_id, "board_id": f"scripted_{game_id}", "rows": 8, "cols": 8, "task": "first_order",
+            "prompt": "Write Python code with put(board, shape, color, x, y).",
+            "turns": ["Place a red washer at row 8, column 4, a blue nut on it, and a yellow horizontal bridge "
+                      "at row 3, columns 6 and 7."] if turns == 1 else
+                     ["Place a red washer at row 8, column 4.", "Place a blue nut on top of it.",
+                      "Place a yellow horizontal bridge at row 3, columns 6 and 7."],
+            "instructions": [], "given_code": "", "target": TARGET,
+            "gold_code": code, "gold_turns": [code] if turns == 1 else GOLD}
+    if script is not None:
+        inst["script"] = script
+    return inst
+
+
+def fence(code):
+    return f"Here is the code:\n```python\n{code}\n```"
+
+
+WRONG = {
+    # name: (answer, outcome, category)
+    "missing code block": ("I would place the washer first and then the nut.", "aborted", "parse_error"),
+    "syntax error": (fence("put(board, 'washer', 'red', 7, 3"), "lose", "syntax_error"),
+    "bridge at the edge": (fence("put(board, 'bridge-h', 'yellow', 2, 7)"), "lose", "value_error"),
+    "screw under a nut": (fence("put(board, 'screw', 'red', 7, 3)\nput(board, 'nut', 'blue', 7, 3)"),
+                          "lose", "not_on_top_of_screw"),
+    "wrong colours": (fence("\n".join(g.replace("'red'", "'green'") for g in GOLD)), "lose", "mismatch_color"),
+    "shifted object": (fence("\n".join(g.replace(", 7, 3)", ", 6, 3)") for g in GOLD)), "lose", "mismatch_location"),
+    "hostile program": (fence("import os\nos.system('touch /tmp/sartco_pwned')"), "lose", "forbidden"),
+    "hostile dunder escape": (fence("().__class__.__base__.__subclasses__()"), "lose", "forbidden"),
+    "endless loop": (fence("while True:\n    pass"), "lose", "timeout"),
+}
+
+
+def outcome(scores):
+    s = scores["episode scores"]
+    return "aborted" if s["Aborted"] else "success" if s["Success"] else "lose"
+
+
+def test_scripted_wrong_answers(play_episodes):
+    names = list(WRONG)
+    instances = [instance(i, [WRONG[n][0]]) for i, n in enumerate(names)]
+    results = play_episodes(instances, SINGLE)
+    for name, result in zip(names, results):
+        _, expected_outcome, expected_category = WRONG[name]
+        s = result["scores"]["episode scores"]
+        assert (outcome(result["scores"]), s["Error Category"]) == (expected_outcome, expected_category), name
+        if expected_outcome == "aborted":
+            assert s["Main Score"] is None  # NaN in scores.json
+            assert s["Violated Request Count"] == 1
+        else:
+            assert s["Main Score"] == 0.0 and s["Execution Success"] == 0
+        # the transcript's board event carries the category and, after scoring, the picture
+        board = [e for t in result["interactions"]["turns"] for e in t if e["action"]["type"] == "board"][-1]
+        assert board["action"]["category"] == expected_category
+        assert (result["dir"] / "boards.svg").is_file()
+
+
+def test_mock_builds_the_target_single_and_multi_turn(play_episodes):
+    results = play_episodes([instance(0), instance(1, turns=3)], dict(SINGLE, name="mock_gold"))
+    for result in results:
+        s = result["scores"]["episode scores"]
+        assert (s["Main Score"], s["Exact Match"], s["CodeBLEU"], s["Error Category"]) == (100.0, 1, 1.0, "success")
+        assert s["Puts"] == 3 and s["Cell F1"] == 1.0
+    assert len(results[1]["interactions"]["turns"]) == 3  # one round per instruction
+
+
+def test_multi_turn_parse_error_in_the_middle_aborts(play_episodes):
+    script = [fence(GOLD[0]), "Sure, placing the nut now!", fence(GOLD[2])]
+    [result] = play_episodes([instance(0, script, turns=3)], dict(SINGLE, name="multi_abort"))
+    s = result["scores"]["episode scores"]
+    assert outcome(result["scores"]) == "aborted" and s["Error Category"] == "parse_error"
+    assert s["Main Score"] is None and s["Violated Request Count"] == 1
+
+
+def test_repair_attempt_recovers(play_episodes):
+    script = [fence("put(board, 'washer', 'green', 7, 3)\n" + "\n".join(GOLD[1:])), fence("\n".join(GOLD))]
+    [result] = play_episodes([instance(0, script)], dict(SINGLE, name="repair", repair_attempts=1))
+    s = result["scores"]["episode scores"]
+    assert outcome(result["scores"]) == "success" and s["Main Score"] == 100.0
+    assert len(result["interactions"]["sartco_attempts"]) == 2

@@ -1,0 +1,65 @@
+"""parse_code on answers as models really write them."""
+import pytest
+
+from sartco.clem.parsing import ParseError, parse_code
+from sartco.world import ErrorCode
+
+PUT = "put(board, 'washer', 'red', 7, 3)"
+FUNCTION = ("def wn(board, colors, x, y):\n"
+            "    shapes = ['washer', 'nut']\n"
+            "    for shape, color, dx, dy in zip(shapes, colors, [0, 0], [0, 0]):\n"
+            "            put(board, shape, color, x + dx, y + dy)")
+USAGE = "wn(board, ('red', 'blue'), 7, 3)"
+LOOP = "for row in range(8):\n    for col in [0, 3, 6]:\n        bw(board, colors=['red', 'yellow'],x=row, y=col)"
+
+CASES = {
+    "bare put": (PUT, PUT),
+    "output label": (f"Output: {PUT}", PUT),
+    "bold output label": (f"**Output:**\n{PUT}", PUT),
+    "fenced python": (f"```python\n{PUT}\n```", PUT),
+    "fenced no language": (f"```\n{PUT}\n```", PUT),
+    "prose around fence": (f"Sure! Here is the code:\n\n```python\n{PUT}\n```\n\nThis places the red washer.", PUT),
+    "prose around bare code": (f"To build it, we place a washer.\n{PUT}\nThat is all.", PUT),
+    "unclosed fence (token limit)": (f"```python\n{FUNCTION}\n{USAGE}", f"{FUNCTION}\n{USAGE}"),
+    "function and usage labels": (f"Function:\n{FUNCTION}\nUsage:\n{USAGE}", f"{FUNCTION}\n{USAGE}"),
+    "two fenced blocks": (f"The function:\n```python\n{FUNCTION}\n```\nUse it like this:\n```python\n{USAGE}\n```",
+                          f"{FUNCTION}\n{USAGE}"),
+    "repeated instruction tail": (f"Output: {PUT}\nInstruction: place a blue nut on top of it\n"
+                                  "Output: put(board, 'nut', 'blue', 7, 3)\nInstruction: place", PUT),
+    "tail after fenced code": (f"```python\n{LOOP}\n```\n\nInstruction: Fill every row\nOutput:\n```python\nfoo()\n```", LOOP),
+    "echoed instruction first": (f"Instruction: place a red washer in the 8th row\nOutput: {PUT}", PUT),
+    "inline backticks": (f"`{PUT}`", PUT),
+    "indented loop in prose": (f"Here you go:\n{LOOP}\nEach row gets three objects.", LOOP),
+    "windows line ends": (f"Output:\r\n{FUNCTION}\r\n{USAGE}\r\n".replace("\n", "\r\n").replace("\r\r", "\r"),
+                          f"{FUNCTION}\n{USAGE}"),
+    "board init kept": (f"board = init_board(8, 8)\n{PUT}", f"board = init_board(8, 8)\n{PUT}"),
+    "multi-line call": ("put(board,\n    'washer', 'red',\n    7, 3)", "put(board,\n    'washer', 'red',\n    7, 3)"),
+    "comment inside code": (f"# the washer\n{PUT}", f"# the washer\n{PUT}"),
+}
+
+
+@pytest.mark.parametrize("answer, expected", CASES.values(), ids=CASES.keys())
+def test_finds_the_code(answer, expected):
+    assert parse_code(answer) == expected
+
+
+@pytest.mark.parametrize("answer", [
+    "", "   \n  ", "I am not sure how to build this.",
+    "Place a red washer in the 8th row, 4th column. Then place a blue nut on top of it.",
+    "Instruction: place a red washer\n",
+    "Sorry, I cannot help with that request.",
+])
+def test_no_code_is_a_parse_error(answer):
+    with pytest.raises(ParseError) as info:
+        parse_code(answer)
+    assert info.value.code is ErrorCode.PARSE_ERROR
+
+
+def test_parse_error_is_clemcores():
+    from clemcore.clemgame.errors import ParseError as ClemParseError
+    assert issubclass(ParseError, ClemParseError)
+
+
+def test_broken_code_is_not_a_parse_error():
+    # found but not compilable: executed and lost as syntax_error, not aborted
+    assert parse_code("```python\nput(board, 'washer', 'red', 7, 3\n```") == "put(board, 'washer', 'red', 7, 3"
