@@ -6,6 +6,9 @@ Who answers:
 - `mock`/`programmatic`: the episode's gold code, one turn at a time, as a fenced block (or, if
   the instance carries a `script`, those raw answers verbatim: scripted episodes for tests);
 - `rulebased` (model registry entry, see sartco.clem.rulebased): the rule-based follower;
+  a game whose instructions come from another player (cobot_describe) passes
+  `mock_follows=True`, so that `mock` is the rule-based follower too (there is no gold answer
+  for instructions written during the game);
 - `human`: the terminal; type the code, end with a line holding only "." (or end of input).
 """
 from __future__ import annotations
@@ -25,14 +28,16 @@ def fenced(code: str) -> str:
 class Builder(Player):
     def __init__(self, model, *, gold_turns: Sequence[str] = (),
                  rulebased: Callable[[int, dict], str] | None = None, script: Sequence[str] | None = None,
-                 name: str | None = None):
+                 name: str | None = None, mock_follows: bool = False):
         """gold_turns: the gold code of each turn (what `mock` answers);
         rulebased: turn index, context -> code (what the `rulebased` model answers);
-        script: raw answers that `mock` gives instead of the gold code (scripted episodes)."""
+        script: raw answers that `mock` gives instead of the gold code (scripted episodes);
+        mock_follows: `mock` answers like `rulebased` (script still first), never with gold code."""
         super().__init__(model, name=name, game_role="Builder")
         self.gold_turns = list(gold_turns)
         self.rulebased = rulebased
         self.script = list(script) if script else None
+        self.mock_follows = mock_follows
         self.turn = 0  # answers given so far
 
     def _custom_response(self, context: dict) -> str:
@@ -44,21 +49,41 @@ class Builder(Player):
             return fenced(self.rulebased(turn, context))
         if self.script is not None:
             return self.script[min(turn, len(self.script) - 1)]
+        if self.mock_follows:
+            if self.rulebased is None:
+                raise RuntimeError("mock_follows needs a rule-based builder")
+            return fenced(self.rulebased(turn, context))
         if not self.gold_turns:
             return "I have no code for this."
         return fenced(self.gold_turns[min(turn, len(self.gold_turns) - 1)])
 
     def _terminal_response(self, context: dict) -> str:
         self.turn += 1
-        print(f"\n{context['content'] if context else 'Nothing has been said yet.'}")
-        print('\nYour code as Builder (end with a line holding only "."):')
-        lines = []
-        while True:
-            try:
-                line = input()
-            except EOFError:
-                break
-            if line.strip() == ".":
-                break
-            lines.append(line)
-        return "\n".join(lines)
+        return terminal_answer(context, "your code as Builder")
+
+
+def terminal_answer(context: dict | None, what: str) -> str:
+    """Show the context on the terminal and read an answer: lines up to one holding only "."
+    (or the end of input)."""
+    print(f"\n{context['content'] if context else 'Nothing has been said yet.'}")
+    print(f'\n{what[:1].upper()}{what[1:]} (end with a line holding only "."):')
+    lines = []
+    while True:
+        try:
+            line = input()
+        except EOFError:
+            break
+        if line.strip() == ".":
+            break
+        lines.append(line)
+    return "\n".join(lines)
+
+
+def rulebased_code(instructions, task: str, given_code: str = "", rows: int = 8, cols: int = 8) -> str:
+    """What the rule-based follower writes for instructions (a text or a list of texts); a
+    Python comment saying why when it cannot read them (it then builds nothing), never an error."""
+    from sartco.follower import FollowError, follow
+    try:
+        return follow(instructions, task, given_code, rows, cols)
+    except FollowError as error:
+        return f"# I cannot follow these instructions: {error}"

@@ -1,0 +1,111 @@
+"""The Describer side of cobot_describe: the player who looks at the target board and writes the
+instructions a builder then follows (the paper's model-written instructions).
+
+- Describer                      the player: a clemcore model; `mock` / `rulebased` write the
+                                 episode's template instruction; `human` types in the terminal
+- parse_instruction / ParseError the text under the "Instruction:" label (none -> aborted)
+- INSTRUCTION_SLOT / fill_builder_prompt   the builder prompt's place for the instruction
+- log_instruction / INSTRUCTION_KEY   the instruction as the game master passed it on, recorded
+                                 in interactions.json for the scorer and for
+                                 `sartco import-instructions`
+- instruction_facts              length in words and characters, whether the object is named
+- DescribeScorer                 BuildScorer's scores of the rebuilt board + the facts above
+"""
+from __future__ import annotations
+
+import re
+from typing import Sequence
+
+from clemcore.clemgame import Player
+
+from .builder import terminal_answer
+from .parsing import ParseError
+from .scoring import NAN, BuildScorer
+
+INSTRUCTION_KEY = "sartco_instruction"  # interactions.json: {"text", "error", "combo_name"}
+INSTRUCTION_SLOT = "<<DESCRIBER_INSTRUCTION>>"  # where a stored builder prompt takes the instruction
+
+
+def fill_builder_prompt(prompt: str, instruction: str) -> str:
+    """The builder's prompt (rendered with builder_prompt(..., instruction=INSTRUCTION_SLOT) at
+    instance generation) with the describer's instruction in its slot."""
+    if INSTRUCTION_SLOT not in prompt:
+        raise ValueError("the builder prompt has no slot for the describer's instruction")
+    head, _, tail = prompt.rpartition(INSTRUCTION_SLOT)
+    return f"{head}{instruction}{tail}"
+
+# "Instruction:", "**Instructions:**", "### Instruction:" (the rest of the line may hold text)
+_LABEL = re.compile(r"^\s*(?:#+\s*)?(?:\*\*|__)?\s*instructions?\s*(?:\*\*|__)?\s*:\s*(?:\*\*|__)?\s*(?P<rest>.*)$",
+                    re.IGNORECASE)
+# what ends the instruction: another answer label or a code fence (a model going on with a program)
+_END = re.compile(r"^\s*(?:#+\s*)?(?:\*\*|__)?\s*(?:output|function|usage|code|answer)\s*(?:\*\*|__)?\s*:|^\s*(?:`{3,}|~{3,})",
+                  re.IGNORECASE)
+
+
+def parse_instruction(text: str) -> str:
+    """The instruction in a describer's answer: the text after the first "Instruction:" label, up
+    to an Output/Function/Usage/Code label or a code fence; blank lines squeezed. Raises
+    ParseError when there is no label or nothing after it. Junk after the label is passed on:
+    the builder has to cope with it, as with any bad instruction."""
+    if text is None or not str(text).strip():
+        raise ParseError("the describer gave an empty answer", response=text)
+    lines = str(text).replace("\r\n", "\n").replace("\r", "\n").split("\n")
+    start = next((i for i, line in enumerate(lines) if _LABEL.match(line)), None)
+    if start is None:
+        raise ParseError("the describer's answer has no 'Instruction:' label", response=text)
+    body = [_LABEL.match(lines[start]).group("rest")]
+    for line in lines[start + 1:]:
+        if _END.match(line):
+            break
+        body.append(line)
+    kept = [line.rstrip() for line in body]
+    instruction = re.sub(r"\n{3,}", "\n\n", "\n".join(kept)).strip().strip("*_").strip()
+    if not instruction:
+        raise ParseError("the describer's 'Instruction:' label is followed by nothing", response=text)
+    return instruction
+
+
+def instruction_facts(text: str | None, combo_name: str) -> dict:
+    """Instruction Words, Instruction Characters, Object Named (the combination's name, e.g. 'wn',
+    as a word of its own, any case); NaN for all when there is no instruction."""
+    if text is None:
+        return {"Instruction Words": NAN, "Instruction Characters": NAN, "Object Named": NAN}
+    named = re.search(rf"(?<![A-Za-z0-9]){re.escape(combo_name)}(?![A-Za-z0-9])", text, re.IGNORECASE)
+    return {"Instruction Words": len(text.split()), "Instruction Characters": len(text),
+            "Object Named": int(bool(named))}
+
+
+def log_instruction(game_master, text: str | None, combo_name: str, error: str | None = None) -> None:
+    game_master.log_key(INSTRUCTION_KEY, {"text": text, "error": error, "combo_name": combo_name})
+
+
+class Describer(Player):
+    def __init__(self, model, *, template: str, script: Sequence[str] | None = None, name: str | None = None):
+        """template: the episode's template instruction (what `mock` and `rulebased` write);
+        script: raw answers that `mock` gives instead (scripted episodes for tests)."""
+        super().__init__(model, name=name, game_role="Describer")
+        self.template = template
+        self.script = list(script) if script else None
+
+    def _custom_response(self, context: dict) -> str:
+        if self.script is not None:
+            return self.script[0]
+        return f"Instruction: {self.template}"
+
+    def _terminal_response(self, context: dict) -> str:
+        text = terminal_answer(context, "your instructions as Describer")
+        return text if _LABEL.match(text.split("\n", 1)[0]) else f"Instruction: {text}"
+
+
+class DescribeScorer(BuildScorer):
+    """The rebuilt board's scores (BuildScorer: Main Score = 100 x ES, cell F1, category, ...)
+    plus Describer Answered (0/1: an instruction was found), Instruction Words, Instruction
+    Characters and Object Named."""
+
+    def compute_episode_scores(self, interactions: dict) -> None:
+        super().compute_episode_scores(interactions)
+        record = interactions.get(INSTRUCTION_KEY) or {}
+        text = record.get("text")
+        self.log_episode_score("Describer Answered", int(text is not None))
+        for name, value in instruction_facts(text, record.get("combo_name", "")).items():
+            self.log_episode_score(name, value)
