@@ -1,0 +1,112 @@
+"""Instances of cobot_describe from a generated dataset's test split.
+
+    python games/cobot_describe/instancegenerator.py [--dataset instances/v1] [--seed 42]
+           [--examples 5] [--slice N]
+
+One experiment per board kind, every test board of the dataset one episode:
+  simple_boards                    simple boards (simple objects); the builder writes the optimal
+                                   function (the paper's single-turn task of model-written instructions)
+  regular_boards_simple_objects    regular boards of simple objects; the builder gets the object
+  regular_boards_complex_objects   function and writes the repetition code (of complex objects)
+The builder's prompt is cobot_instruct's (sartco.instances.prompts.builder_prompt) with `--examples`
+in-context examples from the dataset's train split (select_examples, seeded by --seed); the
+instruction slot is filled during the game with what the describer wrote. The instance file
+names the dataset version and seed and the generator's seed.
+
+--slice N also writes in/instances_slice.json with N episodes per experiment, spread over the
+split, for a smoke run with a local model: `clem run -g cobot_describe -m MODEL -i instances_slice`.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+
+from clemcore.clemgame import GameInstanceGenerator
+
+from sartco.clem.describer import INSTRUCTION_SLOT
+from sartco.clem.episodes import board_fields
+from sartco.instances.examples import select_examples
+from sartco.instances.prompts import builder_prompt, describer_prompt, instruction_text
+
+GAME_DIR = Path(__file__).resolve().parent
+REPO = GAME_DIR.parents[1]
+
+# experiment name -> (board_type, object_type, dataset file stem, builder task)
+EXPERIMENTS = {
+    "simple_boards": ("simple", "simple", "simple_simple", "optimal_function"),
+    "regular_boards_simple_objects": ("regular", "simple", "regular_simple", "repetition"),
+    "regular_boards_complex_objects": ("regular", "complex", "regular_complex", "repetition"),
+}
+TEMPLATE_STYLE = {"optimal_function": "single_turn", "repetition": "regular"}
+
+
+def load_split(dataset: Path, stem: str, split: str) -> list[dict]:
+    path = dataset / f"{stem}_{split}.json"
+    try:
+        return json.loads(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        sys.exit(f"instancegenerator: {path}: missing (generate the dataset first: sartco generate)")
+
+
+def spread(items: list, n: int | None) -> list:
+    """n items evenly spread over the list (all when n is None or too large)."""
+    if n is None or n >= len(items):
+        return list(items)
+    return [items[i * len(items) // n] for i in range(n)]
+
+
+class CobotDescribeInstanceGenerator(GameInstanceGenerator):
+
+    def __init__(self):
+        super().__init__(str(GAME_DIR))
+
+    def on_generate(self, seed: int, dataset: Path = REPO / "instances" / "v1", examples: int = 5,
+                    per_experiment: int | None = None, **kwargs):
+        manifest = json.loads((dataset / "manifest.json").read_text(encoding="utf-8"))
+        self.instances["dataset"] = {"version": manifest["version"], "seed": manifest["seed"],
+                                     "source": manifest["source"], "split": "test"}
+        self.instances["seed"] = seed
+        game_id = 0
+        for name, (board_type, object_type, stem, task) in EXPERIMENTS.items():
+            experiment = self.add_experiment(name)
+            experiment.update(board_type=board_type, object_type=object_type, task=task, split="test",
+                              dataset=manifest["version"], dataset_seed=manifest["seed"],
+                              examples=examples, example_seed=seed)
+            pool = load_split(dataset, stem, "train")
+            for record in spread(load_split(dataset, stem, "test"), per_experiment):
+                instance = self.add_game_instance(experiment, game_id)
+                instance.update(board_fields(record, task))
+                shots = select_examples(record, pool, k=examples, rng=seed)
+                instance["example_ids"] = [r["id"] for r in shots]
+                instance["describer_prompt"] = describer_prompt(record)
+                instance["builder_prompt"] = builder_prompt(record, task, shots, instruction=INSTRUCTION_SLOT)
+                instance["template_instruction"] = instruction_text(record, task, "template")
+                instance["record"] = record
+                game_id += 1
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--dataset", type=Path, default=REPO / "instances" / "v1", help="dataset folder")
+    parser.add_argument("--seed", type=int, default=42, help="seed of the in-context example choice")
+    parser.add_argument("--examples", type=int, default=5, help="in-context examples per prompt (0..10)")
+    parser.add_argument("--slice", type=int, default=None, metavar="N",
+                        help="also write in/instances_slice.json with N episodes per experiment")
+    args = parser.parse_args(argv)
+    if not (args.dataset / "manifest.json").is_file():
+        parser.error(f"--dataset {args.dataset}: no manifest.json (not a dataset folder)")
+    print(CobotDescribeInstanceGenerator().generate("instances.json", seed=args.seed, dataset=args.dataset,
+                                                    examples=args.examples))
+    if args.slice is not None:
+        if args.slice < 1:
+            parser.error("--slice must be at least 1")
+        print(CobotDescribeInstanceGenerator().generate("instances_slice.json", seed=args.seed,
+                                                        dataset=args.dataset, examples=args.examples,
+                                                        per_experiment=args.slice))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
