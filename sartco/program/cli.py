@@ -1,33 +1,24 @@
 """`sartco execute`: JSON lines on stdin -> one JSON line per input on stdout, in order.
 
-in:  {"id": str, "code": str, "target": optional cells}
-out: {"id", "ok", "error": null | code, "message", "cells"} and, when a target was given,
-     "es" (0|1), "category" (null, the program's error code, or a mismatch code),
-     "precision", "recall", "f1".
+The fields of each line are described in lines.py. Blank lines are skipped (they are no input).
 
-A program that fails has es 0 and its error as the category; P/R/F1 are still computed on the
-board it built so far. Blank lines are skipped. A malformed line (not JSON, not an object,
-id/code/target of the wrong type) gives {"id": <its id if a string, else null>, "ok": false,
-"error": "parse_error", "message": "input line N: ...", "cells": {}} and no comparison fields.
-
-Input is read in whatever chunks the pipe delivers, and all complete lines of a chunk (at most
---batch) run as one call of execute_many, split over the workers; so a long file streams in big
-batches while an interactive caller gets each answer as soon as its line arrives.
+Input is read in whatever the pipe holds at the moment (up to --batch complete lines), and
+those lines run as one batch split over the workers; so a long file streams in big batches while
+an interactive caller gets each answer as soon as its line arrives.
 """
 from __future__ import annotations
 
 import json
 import os
-import re
+import select
 
 from sartco.cli import UserError
 from sartco.world import ErrorCode
 
-from .compare import compare
-from .pool import execute_many
-from .records import Limits
+from .lines import answer, malformed, parse_line
+from .pool import dispatch
+from .records import Execution, Limits
 
-KEY = re.compile(r"\d+:\d+")
 CHUNK = 1 << 16
 
 
@@ -52,14 +43,23 @@ def run(args) -> int:
     return 0
 
 
-def _chunks(stream):
-    """Byte chunks as they arrive (os.read on a real file descriptor, else read())."""
+def _chunks(stream, batch: int):
+    """Byte chunks as they arrive: on a real file descriptor, everything readable right now
+    (up to about `batch` lines), else read() of a fixed size."""
     try:
         fd = stream.fileno()
     except (AttributeError, OSError, ValueError):
         fd = None
     while True:
-        chunk = os.read(fd, CHUNK) if fd is not None else stream.read(CHUNK)
+        if fd is None:
+            chunk = stream.read(CHUNK * 16)
+        else:
+            chunk = os.read(fd, CHUNK)
+            while chunk and chunk.count(b"\n") < batch and select.select([fd], [], [], 0)[0]:
+                more = os.read(fd, CHUNK)
+                if not more:
+                    break
+                chunk += more
         if not chunk:
             return
         yield chunk
@@ -68,7 +68,7 @@ def _chunks(stream):
 def _batches(stream, batch: int):
     """Lists of (line number, raw line) with all complete lines available, at most `batch`."""
     tail, number = b"", 0
-    for chunk in _chunks(stream):
+    for chunk in _chunks(stream, batch):
         parts = (tail + chunk).split(b"\n")
         tail = parts.pop()
         lines = []
@@ -82,67 +82,37 @@ def _batches(stream, batch: int):
         yield [(number + 1, tail)]
 
 
-def _check_cells(cells) -> str | None:
-    if type(cells) is not dict:
-        return "target must be an object of cells"
-    for key, stack in cells.items():
-        if not KEY.fullmatch(key):
-            return f"target cell key {key!r:.40} is not 'row:col'"
-        if type(stack) is not list or not all(
-            type(p) is list and len(p) == 2 and type(p[0]) is str and type(p[1]) is str for p in stack
-        ):
-            return f"target cell {key} must be a list of [shape, colour] pairs"
-    return None
-
-
-def parse_line(number: int, raw: bytes):
-    """(id, code, target or None, None) or (id or None, None, None, error message)."""
-    try:
-        item = json.loads(raw)
-    except ValueError as exc:
-        return None, None, None, f"input line {number}: not JSON ({exc})"
-    if type(item) is not dict:
-        return None, None, None, f"input line {number}: expected a JSON object, got {type(item).__name__}"
-    ident = item.get("id")
-    if type(ident) is not str:
-        return None, None, None, f"input line {number}: \"id\" must be a string"
-    code = item.get("code")
-    if type(code) is not str:
-        return ident, None, None, f"input line {number}: \"code\" must be a string"
-    target = item.get("target")
-    if target is not None:
-        problem = _check_cells(target)
-        if problem:
-            return ident, None, None, f"input line {number}: {problem}"
-    return ident, code, target, None
-
-
-def answer(ident, ex, target) -> dict:
-    out = {"id": ident, "ok": ex.ok, "error": ex.error, "message": ex.message, "cells": ex.cells}
-    if target is not None:
-        cmp = compare(ex.cells, target)
-        out["es"] = cmp.es if ex.ok else 0
-        out["category"] = cmp.category if ex.ok else ex.error
-        out["precision"], out["recall"], out["f1"] = cmp.precision, cmp.recall, cmp.f1
-    return out
-
-
 def serve(inp, out, rows: int = 8, cols: int = 8, limits: Limits | None = None, *,
           workers: int | None = None, batch: int = 1024, cache: bool = True) -> int:
-    """The JSON-lines loop over binary streams; returns the number of lines answered."""
+    """The JSON-lines loop over binary streams; returns the number of lines answered.
+
+    The workers parse, run, compare and format each line (lines.py); the parent reads each
+    line's "code" only to send repeats of a source to the same worker, and formats the answer
+    itself only for a line whose worker timed out or died."""
+    limits = limits or Limits()
     answered = 0
     for lines in _batches(inp, batch):
-        parsed = [parse_line(n, raw) for n, raw in lines]
-        codes = [p[1] for p in parsed if p[3] is None]
-        results = iter(execute_many(codes, rows, cols, limits, workers=workers, cache=cache))
+        keys = []
+        for _, raw in lines:
+            try:
+                item = json.loads(raw)
+                keys.append(item.get("code") if type(item) is dict and type(item.get("code")) is str else "")
+            except (ValueError, RecursionError):
+                keys.append("")
+        items = [b"%d %s" % (number, raw) for number, raw in lines]
+        try:
+            answers = dispatch("line", items, keys, rows, cols, limits, workers, cache)
+        except Exception as exc:  # noqa: BLE001 - every line gets an answer, whatever happens
+            answers = [Execution(False, ErrorCode.RUNTIME_ERROR, f"sandbox failure: {exc}", {}, 0)] * len(items)
         text = []
-        for ident, _, target, problem in parsed:
-            if problem is not None:
-                row = {"id": ident, "ok": False, "error": ErrorCode.PARSE_ERROR, "message": problem, "cells": {}}
-            else:
-                row = answer(ident, next(results), target)
-            text.append(json.dumps(row))
-        out.write(("\n".join(text) + "\n").encode("utf-8"))
+        for (number, raw), ans in zip(lines, answers):
+            if type(ans) is bytes:
+                text.append(ans)
+            else:  # timeout or dead worker: answer here
+                ident, code, target, problem = parse_line(number, raw)
+                row = malformed(ident, problem) if problem else answer(ident, ans.ok, ans.error, ans.message, ans.cells, target)
+                text.append(json.dumps(row).encode())
+        out.write(b"\n".join(text) + b"\n")
         out.flush()
         answered += len(text)
     return answered

@@ -1,7 +1,11 @@
 """The parent side: persistent worker processes, batching, hard time limits, restarts.
 
-`execute_many` sends programs in batches (one JSON line per batch) to up to `workers` worker
-processes (default: min(2, CPUs)), each driven by one thread; `execute` is a batch of one. A
+`dispatch` sends items in chunks (a header line + one line per item) to up to `workers` worker
+processes (default: min(2, CPUs)), each driven by one thread; items with the same key (the
+source) go to the same worker, so its code cache sees all repeats. `execute_many` sends programs
+(mode "code"), `sartco execute` sends its raw input lines (mode "line": the worker parses, runs,
+compares and writes the finished output line, so the parent only routes bytes); `execute` is a
+batch of one. A
 worker answers each program on its own line, so the parent knows which program is running and
 gives each one `Limits.wall_time` seconds from the moment the previous answer was read. A late
 answer kills the worker (SIGKILL, then reaped) and the program gets `timeout`; a worker that
@@ -29,7 +33,8 @@ from sartco.world import Board, ErrorCode, WorldError
 from .records import Execution, Limits
 
 E = ErrorCode
-BATCH = 64  # programs per worker round trip when a call is split over several workers
+BATCH = 32  # a call with fewer items than this uses one worker
+CHUNK = 256  # items per worker round trip
 START_TIMEOUT = 30.0
 _ROOT = str(Path(__file__).resolve().parents[2])
 _BOOT = (
@@ -93,16 +98,18 @@ class _Worker:
             self.lines.extend(parts)
         return self.lines.popleft()
 
-    def run(self, programs: list[str], rows: int, cols: int, limits: Limits, cache: bool) -> list[Execution]:
-        results: list[Execution] = []
-        while len(results) < len(programs):
-            todo = programs[len(results):]
+    def run(self, mode: str, items: list[bytes], rows: int, cols: int, limits: Limits, cache: bool) -> list:
+        """One answer per item: the worker's answer line (bytes), or an Execution for an item
+        whose worker timed out or died."""
+        results: list = []
+        while len(results) < len(items):
+            todo = items[len(results):]
             try:
                 if self.proc is None:
                     self.start()
-                request = json.dumps({"limits": limits.as_list(), "rows": rows, "cols": cols,
-                                      "cache": cache, "programs": todo})
-                self.proc.stdin.write(request.encode("utf-8", "surrogatepass") + b"\n")
+                header = json.dumps({"limits": limits.as_list(), "rows": rows, "cols": cols, "cache": cache,
+                                     "mode": mode, "items": len(todo)}).encode()
+                self.proc.stdin.write(b"\n".join([header, *todo]) + b"\n")
                 self.proc.stdin.flush()
             except (_Dead, OSError, ValueError) as exc:
                 self.kill()
@@ -112,23 +119,22 @@ class _Worker:
                 try:
                     line = self._readline(time.monotonic() + limits.wall_time)
                 except (_Dead, OSError):
-                    status = self.kill()
-                    if status is not None and status < 0:
-                        results.append(_failed(E.RESOURCE_LIMIT, f"the program was stopped by signal {-status} (probably its memory budget)"))
-                    else:
-                        results.append(_failed(E.RUNTIME_ERROR, f"the sandbox worker ended (status {status})"))
+                    results.append(_died(self.kill()))
                     break
                 if line is None:
                     self.kill()
                     results.append(_failed(E.TIMEOUT, f"the program ran longer than {limits.wall_time:g} s"))
                     break
-                try:
-                    results.append(_decode(line))
-                except (ValueError, TypeError, KeyError) as exc:
-                    self.kill()
-                    results.append(_failed(E.RUNTIME_ERROR, f"garbled answer from the sandbox worker: {exc}"))
-                    break
+                results.append(line)
         return results
+
+
+def _died(status: int | None) -> Execution:
+    from .worker import OUT_OF_MEMORY
+
+    if status == OUT_OF_MEMORY or (status is not None and status < 0):
+        return _failed(E.RESOURCE_LIMIT, f"the sandbox worker ran out of memory or was stopped (status {status})")
+    return _failed(E.RUNTIME_ERROR, f"the sandbox worker ended (status {status})")
 
 
 def _failed(code: ErrorCode, message: str) -> Execution:
@@ -136,10 +142,13 @@ def _failed(code: ErrorCode, message: str) -> Execution:
 
 
 def _decode(line: bytes) -> Execution:
-    ok, code, message, cells, puts = json.loads(line)
-    if type(ok) is not bool or type(message) is not str or type(cells) is not dict or type(puts) is not int:
-        raise ValueError("unexpected field types")
-    return Execution(ok, None if code is None else ErrorCode(code), message, cells, puts)
+    try:
+        ok, code, message, cells, puts = json.loads(line)
+        if type(ok) is not bool or type(message) is not str or type(cells) is not dict or type(puts) is not int:
+            raise ValueError("unexpected field types")
+        return Execution(ok, None if code is None else ErrorCode(code), message, cells, puts)
+    except (ValueError, TypeError) as exc:
+        return _failed(E.RUNTIME_ERROR, f"garbled answer from the sandbox worker: {exc}")
 
 
 # --- the pool -----------------------------------------------------------------------------------
@@ -175,6 +184,35 @@ def default_workers() -> int:
     return max(1, min(2, os.cpu_count() or 1))
 
 
+def dispatch(mode: str, items: list[bytes], keys: list, rows: int, cols: int, limits: Limits,
+             workers: int | None = None, cache: bool = True) -> list:
+    """Run items on the workers; answers in input order (see _Worker.run). Items with equal
+    keys go to the same worker, so its code cache sees every repeat of a source."""
+    results: list = [None] * len(items)
+    n = max(1, min(workers or default_workers(), -(-len(items) // BATCH)))
+    shares: list[list[int]] = [[] for _ in range(n)]
+    for i, key in enumerate(keys):
+        shares[hash(key) % n].append(i)
+
+    def drive(worker: _Worker, share: list[int]):
+        with worker.lock:
+            for k in range(0, len(share), CHUNK):
+                chunk = share[k:k + CHUNK]
+                for i, answer in zip(chunk, worker.run(mode, [items[i] for i in chunk], rows, cols, limits, cache)):
+                    results[i] = answer
+
+    pool = _get_workers(n)
+    if n == 1:
+        drive(pool[0], shares[0])
+    else:
+        threads = [threading.Thread(target=drive, args=(w, sh), daemon=True) for w, sh in zip(pool, shares)]
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+    return results
+
+
 def execute_many(programs, rows: int = 8, cols: int = 8, limits: Limits | None = None, *,
                  workers: int | None = None, cache: bool = True) -> list[Execution]:
     """Run many programs, each on its own fresh board; results in input order."""
@@ -185,39 +223,21 @@ def execute_many(programs, rows: int = 8, cols: int = 8, limits: Limits | None =
             Board(rows, cols)
         except WorldError as exc:
             return [_failed(exc.code, exc.message) for _ in programs]
-        results: list[Execution | None] = [None] * len(programs)
-        todo = [i for i, p in enumerate(programs) if type(p) is str]
+        results: list = [None] * len(programs)
+        todo = []
         for i, p in enumerate(programs):
-            if type(p) is not str:
+            if type(p) is str:
+                todo.append(i)
+            else:
                 results[i] = _failed(E.TYPE_ERROR, f"the program must be a str, not {type(p).__name__}")
-        n = min(workers or default_workers(), max(1, -(-len(todo) // BATCH)))
-        chunks = [todo[k:k + BATCH] for k in range(0, len(todo), BATCH)] if n > 1 else [todo]
-        feed = iter(chunks)
-        feed_lock = threading.Lock()
-
-        def drive(worker: _Worker):
-            with worker.lock:
-                while True:
-                    with feed_lock:
-                        chunk = next(feed, None)
-                    if chunk is None:
-                        return
-                    done = worker.run([programs[i] for i in chunk], rows, cols, limits, cache)
-                    for i, ex in zip(chunk, done):
-                        results[i] = ex
-
-        pool = _get_workers(n)
-        if n == 1:
-            drive(pool[0])
-        else:
-            threads = [threading.Thread(target=drive, args=(w,), daemon=True) for w in pool]
-            for t in threads:
-                t.start()
-            for t in threads:
-                t.join()
+        items = [json.dumps(programs[i]).encode() for i in todo]
+        answers = dispatch("code", items, [programs[i] for i in todo], rows, cols, limits, workers, cache)
+        for i, answer in zip(todo, answers):
+            results[i] = _decode(answer) if type(answer) is bytes else answer
         return [r if r is not None else _failed(E.RUNTIME_ERROR, "the sandbox returned no result") for r in results]
     except Exception as exc:  # noqa: BLE001 - the caller must never see an exception
-        return [_failed(E.RUNTIME_ERROR, f"sandbox failure: {type(exc).__name__}: {exc}") for _ in programs]
+        n = len(programs) if isinstance(programs, list) else 1
+        return [_failed(E.RUNTIME_ERROR, f"sandbox failure: {type(exc).__name__}: {exc}") for _ in range(n)]
 
 
 def execute(code: str, rows: int = 8, cols: int = 8, limits: Limits | None = None) -> Execution:

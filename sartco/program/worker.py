@@ -1,10 +1,14 @@
 """The worker process: reads batches of programs, runs them one by one, answers line by line.
 
-Protocol (JSON lines, ASCII only):
+Protocol (lines of bytes):
   worker -> parent, once at start:  "ready"
-  parent -> worker, one line per batch: {"limits": [...Limits fields...], "rows": R, "cols": C,
-                                          "cache": bool, "programs": [source, ...]}
-  worker -> parent, one line per program, flushed at once: [ok, code, message, cells, puts]
+  parent -> worker, per batch: a header {"limits": [...Limits fields...], "rows": R, "cols": C,
+      "cache": bool, "mode": "code" | "line", "items": K}, then K item lines:
+      mode "code": the source as a JSON string;
+      mode "line": "<input line number> <raw input line of sartco execute>".
+  worker -> parent, one line per item, flushed at once:
+      mode "code": [ok, code, message, cells, puts]
+      mode "line": the finished output line of `sartco execute` (see lines.py).
 The parent times each answer and kills the worker when one is late (a loop in C code cannot be
 stopped any other way); the worker exits when its stdin closes, so it never outlives the parent.
 
@@ -18,6 +22,9 @@ import json
 import os
 import resource
 import sys
+
+
+OUT_OF_MEMORY = 3  # exit status: the parent reports resource_limit for the current item
 
 
 def _vm_bytes() -> int:
@@ -36,6 +43,7 @@ def _limit(kind, soft):
 
 
 def main() -> int:
+    from .lines import handle
     from .records import Limits
     from .runtime import run
 
@@ -48,18 +56,32 @@ def main() -> int:
     out.write(b'"ready"\n')
     out.flush()
     dumps = json.dumps
-    for line in inp:
-        request = json.loads(line)
+    while True:
+        header = inp.readline()
+        if not header:
+            return 0
+        request = json.loads(header)
         limits = Limits(*request["limits"])
         if limits.memory != memory:
             memory = limits.memory
             _limit(resource.RLIMIT_AS, base + memory)
         rows, cols, cache = request["rows"], request["cols"], request["cache"]
-        for source in request["programs"]:
+
+        def run_code(source):
+            return run(source, rows, cols, limits, cache)[:4]
+
+        # read the whole batch before answering: the parent writes it in one go, and answering
+        # while it still writes could fill both pipes (deadlock)
+        items = [inp.readline().rstrip(b"\n") for _ in range(request["items"])]
+        for item in items:
             try:
-                answer = dumps(run(source, rows, cols, limits, cache))
-            except MemoryError:
-                answer = dumps([False, "resource_limit", "out of memory", {}, 0])
+                if request["mode"] == "code":
+                    answer = dumps(run(json.loads(item), rows, cols, limits, cache))
+                else:
+                    number, _, raw = item.partition(b" ")
+                    answer = handle(int(number), raw, run_code)
+            except MemoryError:  # outside the program's own run: give up, the parent reports it
+                os._exit(OUT_OF_MEMORY)
             out.write(answer.encode("ascii") + b"\n")
             out.flush()
     return 0

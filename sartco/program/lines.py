@@ -1,0 +1,82 @@
+"""One line of the `sartco execute` contract: parse an input line, build its output object.
+
+Used inside the workers (each input line is parsed, run, compared and answered there, so the
+parent only routes bytes) and by the parent for lines whose worker timed out or died.
+
+in:  {"id": str, "code": str, "target": optional cells}
+out: {"id", "ok", "error": null | code, "message", "cells"} and, when a target was given,
+     "es" (0|1), "category" (null, the program's error code, or a mismatch code),
+     "precision", "recall", "f1".
+A program that fails has es 0 and its error as the category; P/R/F1 are still computed on the
+board it built so far. A malformed line (not JSON, not an object, id/code/target of the wrong
+type) gives {"id": <its id if a string, else null>, "ok": false, "error": "parse_error",
+"message": "input line N: ...", "cells": {}} and no comparison fields.
+"""
+from __future__ import annotations
+
+import json
+import re
+
+from sartco.world import ErrorCode
+
+from .compare import compare
+
+KEY = re.compile(r"\d+:\d+")
+
+
+def _check_cells(cells) -> str | None:
+    if type(cells) is not dict:
+        return "target must be an object of cells"
+    for key, stack in cells.items():
+        if not KEY.fullmatch(key):
+            return f"target cell key {key!r:.40} is not 'row:col'"
+        if type(stack) is not list or not all(
+            type(p) is list and len(p) == 2 and type(p[0]) is str and type(p[1]) is str for p in stack
+        ):
+            return f"target cell {key} must be a list of [shape, colour] pairs"
+    return None
+
+
+def parse_line(number: int, raw: bytes):
+    """(id, code, target or None, None) or (id or None, None, None, problem)."""
+    try:
+        item = json.loads(raw)
+    except (ValueError, RecursionError) as exc:
+        return None, None, None, f"input line {number}: not JSON ({exc})"
+    if type(item) is not dict:
+        return None, None, None, f"input line {number}: expected a JSON object, got {type(item).__name__}"
+    ident = item.get("id")
+    if type(ident) is not str:
+        return None, None, None, f"input line {number}: \"id\" must be a string"
+    code = item.get("code")
+    if type(code) is not str:
+        return ident, None, None, f"input line {number}: \"code\" must be a string"
+    target = item.get("target")
+    if target is not None:
+        problem = _check_cells(target)
+        if problem:
+            return ident, None, None, f"input line {number}: {problem}"
+    return ident, code, target, None
+
+
+def answer(ident, ok: bool, error, message: str, cells: dict, target) -> dict:
+    out = {"id": ident, "ok": ok, "error": error, "message": message, "cells": cells}
+    if target is not None:
+        cmp = compare(cells, target)
+        out["es"] = cmp.es if ok else 0
+        out["category"] = cmp.category if ok else error
+        out["precision"], out["recall"], out["f1"] = cmp.precision, cmp.recall, cmp.f1
+    return out
+
+
+def malformed(ident, problem: str) -> dict:
+    return {"id": ident, "ok": False, "error": ErrorCode.PARSE_ERROR, "message": problem, "cells": {}}
+
+
+def handle(number: int, raw: bytes, run) -> str:
+    """The output line (JSON text) for one input line; `run(code)` -> (ok, error, message, cells)."""
+    ident, code, target, problem = parse_line(number, raw)
+    if problem is not None:
+        return json.dumps(malformed(ident, problem))
+    ok, error, message, cells = run(code)
+    return json.dumps(answer(ident, ok, error, message, cells, target))
