@@ -1,0 +1,175 @@
+"""Build the episodes of cobot_instruct from SARTCo datasets (docs/ARCHITECTURE.md, "Datasets").
+
+    python games/cobot_instruct/instancegenerator.py                   # in/instances.json
+    python games/cobot_instruct/instancegenerator.py --published instances/published
+                                                                       # + in/instances_published.json
+
+in/instances.json (committed) comes from a generated dataset (default instances/v1):
+  - the template cells of the paper's Table 3 on the test split, one experiment each;
+  - the ablations on the val split: 0..10 in-context examples, and each prompt section removed.
+in/instances_published.json (gitignored: it embeds the published texts) comes from the imported
+published data (`sartco import ../shared/sartco-data/published --out instances/published`): the
+human-written and model-written cells of Table 3 (test split).
+
+Experiment names: <board>_<object>_<task>_<source>[_<ablation>], board sb|rb (simple|regular
+board), object so|co (simple|complex object), task first_order | sequence_function |
+optimal_function | repetition, source template | human | codellama | gpt4 | claude; ablations
+end in _examples_<k> or _without_<section>. In-context examples always come from the
+generated dataset's train split (the published data has no simple-board train split) and show
+template instructions with gold code of the task's style (sartco.instances.examples/prompts).
+Each experiment and the file record the dataset version, source and seed, and this generator's seed.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+from pathlib import Path
+
+from clemcore.clemgame import GameInstanceGenerator
+
+from sartco.instances.examples import MAX_EXAMPLES, select_examples
+from sartco.instances.prompts import SECTIONS, builder_prompt, builder_turn, gold_code, instruction_text
+
+GAME_DIR = Path(__file__).resolve().parent
+REPO = GAME_DIR.parents[1]
+N_EXAMPLES = 5          # in-context examples in the Table 3 experiments
+ABLATION_EPISODES = 10  # episodes per ablation experiment (val split)
+
+BOARDS = {"sb_so": ("simple", "simple"), "rb_so": ("regular", "simple"), "rb_co": ("regular", "complex")}
+# the cells of the paper's Table 3: (board/object, task, sources from the generated data, from the published data)
+CELLS = [
+    ("sb_so", "first_order", ["template"], []),
+    ("sb_so", "sequence_function", ["template"], ["human"]),
+    ("sb_so", "optimal_function", ["template"], ["human", "codellama", "gpt4", "claude"]),
+    ("rb_so", "repetition", ["template"], ["human", "codellama", "gpt4", "claude"]),
+    ("rb_co", "repetition", ["template"], ["human"]),
+]
+
+
+class UserError(Exception):
+    pass
+
+
+def load_dataset(path: Path) -> tuple[dict, dict[str, list[dict]]]:
+    """manifest and records by file name of one dataset folder."""
+    manifest_file = path / "manifest.json"
+    if not manifest_file.is_file():
+        raise UserError(f"{manifest_file}: no dataset manifest (expected a folder written by `sartco generate` "
+                        f"or `sartco import`)")
+    manifest = json.loads(manifest_file.read_text(encoding="utf-8"))
+    files = {name: json.loads((path / name).read_text(encoding="utf-8")) for name in manifest.get("files", {})}
+    return manifest, files
+
+
+def records(files: dict, board: str, split: str) -> list[dict]:
+    board_type, object_type = BOARDS[board]
+    name = f"{board_type}_{object_type}_{split}.json"
+    if name not in files:
+        raise UserError(f"dataset has no file {name}")
+    return files[name]
+
+
+def episode(record: dict, task: str, source: str, examples: list[dict], sections=SECTIONS) -> dict:
+    """One game instance: what the builder is told, what counts as right."""
+    code = record["code"]
+    if task == "first_order":
+        steps = instruction_text(record, task, source)
+        turns = [builder_prompt(record, task, examples, sections, source, step=0)]
+        turns += [builder_turn(record, k, source) for k in range(1, len(steps))]
+        instructions, gold_turns = list(steps), list(code["first_order"]["steps"])
+    else:
+        turns = [builder_prompt(record, task, examples, sections, source)]
+        instructions = [instruction_text(record, task, source)]
+        gold_turns = [gold_code(record, task)]
+    return {
+        "board_id": record["id"], "rows": record["rows"], "cols": record["cols"], "task": task,
+        "turns": turns, "instructions": instructions,
+        "given_code": code["repetition"]["function"] if task == "repetition" else "",
+        "gold_code": gold_code(record, task), "gold_turns": gold_turns,
+        "target": record["target"], "examples": [ex["id"] for ex in examples],
+    }
+
+
+class CobotInstructInstanceGenerator(GameInstanceGenerator):
+
+    def __init__(self):
+        super().__init__(str(GAME_DIR))
+
+    def experiment(self, name: str, board: str, task: str, source: str, split: str, dataset: dict,
+                   ablation: dict | None = None):
+        board_type, object_type = BOARDS[board]
+        exp = self.add_experiment(name)
+        exp.update(board_type=board_type, object_type=object_type, task=task, source=source, split=split,
+                   ablation=ablation, dataset=dataset)
+        exp.move_to_end("game_instances")
+        return exp
+
+    def add_episodes(self, exp, items, task, source, pool, seed, k, sections=SECTIONS):
+        for game_id, record in enumerate(items):
+            examples = select_examples(record, pool, k, seed) if "examples" in sections else []
+            inst = self.add_game_instance(exp, game_id)
+            inst.update(episode(record, task, source, examples, sections))
+
+    def on_generate(self, seed: int, dataset_dir: Path, published_dir: Path | None = None,
+                    n_examples: int = N_EXAMPLES, ablation_episodes: int = ABLATION_EPISODES):
+        manifest, files = load_dataset(dataset_dir)
+        info = {"version": manifest["version"], "source": manifest["source"], "seed": manifest.get("seed"),
+                "path": os.path.relpath(dataset_dir, REPO), "generator_seed": seed, "n_examples": n_examples}
+        self.instances["dataset"] = info
+        pools = {board: records(files, board, "train") for board in BOARDS}
+        if published_dir is None:
+            for board, task, sources, _ in CELLS:
+                for source in sources:
+                    exp = self.experiment(f"{board}_{task}_{source}", board, task, source, "test", info)
+                    self.add_episodes(exp, records(files, board, "test"), task, source, pools[board], seed, n_examples)
+            for board, task, sources, _ in CELLS:
+                val = records(files, board, "val")[:ablation_episodes]
+                for k in range(MAX_EXAMPLES + 1):
+                    exp = self.experiment(f"{board}_{task}_template_examples_{k}", board, task, "template", "val",
+                                          info, {"kind": "examples", "value": k})
+                    self.add_episodes(exp, val, task, "template", pools[board], seed, k)
+                for section in SECTIONS:
+                    kept = tuple(s for s in SECTIONS if s != section)
+                    exp = self.experiment(f"{board}_{task}_template_without_{section}", board, task, "template",
+                                          "val", info, {"kind": "without", "value": section})
+                    self.add_episodes(exp, val, task, "template", pools[board], seed, n_examples, kept)
+            return
+        pub_manifest, pub_files = load_dataset(published_dir)
+        pub_info = {"version": pub_manifest["version"], "source": pub_manifest["source"],
+                    "seed": pub_manifest.get("seed"), "path": os.path.relpath(published_dir, REPO),
+                    "examples_from": info, "generator_seed": seed, "n_examples": n_examples}
+        self.instances["dataset"] = pub_info
+        for board, task, _, sources in CELLS:
+            for source in sources:
+                items = [r for r in records(pub_files, board, "test") if source in r["instructions"]]
+                exp = self.experiment(f"{board}_{task}_{source}", board, task, source, "test", pub_info)
+                self.add_episodes(exp, items, task, source, pools[board], seed, n_examples)
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--dataset", type=Path, default=REPO / "instances" / "v1", help="generated dataset folder")
+    parser.add_argument("--published", type=Path, default=None,
+                        help="imported published dataset folder: write in/instances_published.json instead")
+    parser.add_argument("--seed", type=int, default=42, help="seed of the in-context example choice")
+    parser.add_argument("--examples", type=int, default=N_EXAMPLES, help="in-context examples (Table 3 cells)")
+    parser.add_argument("--ablation-episodes", type=int, default=ABLATION_EPISODES)
+    args = parser.parse_args(argv)
+    try:
+        gen = CobotInstructInstanceGenerator()
+        name = "instances.json" if args.published is None else "instances_published.json"
+        path = gen.generate(name, seed=args.seed, dataset_dir=args.dataset.resolve(),
+                            published_dir=args.published.resolve() if args.published else None,
+                            n_examples=args.examples, ablation_episodes=args.ablation_episodes)
+    except (UserError, KeyError, ValueError) as exc:
+        print(f"instancegenerator: {exc}", file=sys.stderr)
+        return 2
+    exps = gen.instances["experiments"]
+    print(f"{path}: {len(exps)} experiments, {sum(len(e['game_instances']) for e in exps)} episodes")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,213 @@
+"""`sartco report -r RESULTS [--out scores/]`: the paper's tables from a clemcore results folder.
+
+Reads every episode's scores.json (written by `clem score`) and its experiment.json, and writes,
+as Markdown and CSV:
+  table3.md / table3.csv      board type, object type, task, instruction source, model: EM, CB, ES
+                              (the paper's Table 3; test-split experiments without ablation)
+  ablations.md / ablations.csv  the val-split ablations (in-context examples, removed prompt sections)
+  errors.md / errors.csv      episodes per error category, per model and experiment
+Numbers are percentages over all episodes of a cell; an aborted episode (no code found) counts
+as 0 for EM, CB and ES, and is listed as parse_error in the error tables.
+"""
+from __future__ import annotations
+
+import argparse
+import csv
+import json
+import math
+from collections import Counter, defaultdict
+from pathlib import Path
+
+from sartco.cli import UserError
+
+TASK_ORDER = ["first_order", "sequence_function", "optimal_function", "repetition"]
+SOURCE_ORDER = ["template", "human", "codellama", "gpt4", "claude"]
+BOARD_NAMES = {"simple": "simple", "regular": "regular"}
+TASK_NAMES = {"first_order": "first-order (multi-turn)", "sequence_function": "function from puts",
+              "optimal_function": "optimal function", "repetition": "repetition"}
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("-r", "--results", required=True, type=Path, help="clemcore results folder")
+    parser.add_argument("--out", type=Path, default=Path("scores"), help="folder for the tables (default: scores/)")
+    parser.add_argument("-g", "--game", action="append", default=None,
+                        help="only this game (repeatable; default: every game with SARTCo experiments)")
+
+
+def _num(value) -> float | None:
+    if value is None or isinstance(value, str):
+        return None
+    value = float(value)
+    return None if math.isnan(value) else value
+
+
+def _load(path: Path) -> dict:
+    try:
+        return json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, ValueError) as exc:
+        raise UserError(f"{path}: cannot read JSON ({exc})") from None
+
+
+def collect(results: Path, games: list[str] | None = None) -> list[dict]:
+    """One row per scored episode: the experiment's fields, the model and the episode scores."""
+    if not results.is_dir():
+        raise UserError(f"{results}: no such results folder")
+    experiments: dict[Path, dict | None] = {}
+    episodes = []
+    for path in sorted(results.rglob("scores.json")):
+        episode_dir = path.parent
+        exp_dir = episode_dir.parent
+        if exp_dir not in experiments:
+            exp_file = exp_dir / "experiment.json"
+            experiments[exp_dir] = _load(exp_file) if exp_file.is_file() else None
+        exp = experiments[exp_dir]
+        if not exp or "task" not in exp or "board_type" not in exp:
+            continue  # not a SARTCo experiment
+        game = exp.get("game_name") or exp_dir.parent.name
+        if games and game not in games:
+            continue
+        scores = _load(path).get("episode scores", {})
+        episodes.append({
+            "game": game, "model": exp_dir.parent.parent.name, "experiment": exp["name"],
+            "board_type": exp["board_type"], "object_type": exp["object_type"], "task": exp["task"],
+            "source": exp.get("source", ""), "split": exp.get("split", ""), "ablation": exp.get("ablation"),
+            "aborted": int(scores.get("Aborted", 0) or 0),
+            "em": _num(scores.get("Exact Match")), "cb": _num(scores.get("CodeBLEU")),
+            "es": _num(scores.get("Execution Success")), "f1": _num(scores.get("Cell F1")),
+            "category": scores.get("Error Category") or ("parse_error" if scores.get("Aborted") else "unknown"),
+        })
+    if not episodes:
+        raise UserError(f"{results}: no scored SARTCo episodes (run `clem score -r {results}` first)")
+    return episodes
+
+
+def _pct(values: list[float | None]) -> float:
+    """Mean in percent; a missing value (aborted episode) counts as 0."""
+    return round(100.0 * sum(v or 0.0 for v in values) / len(values), 2) if values else float("nan")
+
+
+def _summarise(group: list[dict]) -> dict:
+    return {"episodes": len(group), "played": _pct([1.0 - e["aborted"] for e in group]),
+            "em": _pct([e["em"] for e in group]), "cb": _pct([e["cb"] for e in group]),
+            "es": _pct([e["es"] for e in group]), "f1": _pct([e["f1"] for e in group])}
+
+
+def _order(key: tuple) -> tuple:
+    game, board, obj, task, source = key[:5]
+    return (game, board != "simple", obj != "simple", TASK_ORDER.index(task) if task in TASK_ORDER else 99,
+            SOURCE_ORDER.index(source) if source in SOURCE_ORDER else 99, source) + tuple(str(k) for k in key[5:])
+
+
+def table3(episodes: list[dict]) -> tuple[list[str], list[dict]]:
+    """Long rows (one per cell and model) of the paper's Table 3."""
+    groups: dict[tuple, list] = defaultdict(list)
+    for e in episodes:
+        if e["ablation"]:
+            continue
+        groups[(e["game"], e["board_type"], e["object_type"], e["task"], e["source"], e["split"], e["model"])].append(e)
+    rows = []
+    for key in sorted(groups, key=_order):
+        game, board, obj, task, source, split, model = key
+        rows.append({"game": game, "board_type": board, "object_type": obj, "task": task, "source": source,
+                     "split": split, "model": model, **_summarise(groups[key])})
+    return ["game", "board_type", "object_type", "task", "source", "split", "model", "episodes", "played",
+            "em", "cb", "es", "f1"], rows
+
+
+def ablations(episodes: list[dict]) -> tuple[list[str], list[dict]]:
+    groups: dict[tuple, list] = defaultdict(list)
+    for e in episodes:
+        if not e["ablation"]:
+            continue
+        ab = e["ablation"]
+        groups[(e["game"], e["board_type"], e["object_type"], e["task"], e["source"], ab.get("kind", ""),
+                str(ab.get("value", "")), e["model"])].append(e)
+    def order(key):
+        kind, value = key[5], key[6]
+        return _order(key[:5]) + (kind, int(value) if value.isdigit() else 99, value, key[7])
+    rows = []
+    for key in sorted(groups, key=order):
+        game, board, obj, task, source, kind, value, model = key
+        rows.append({"game": game, "board_type": board, "object_type": obj, "task": task, "source": source,
+                     "ablation": kind, "value": value, "model": model, **_summarise(groups[key])})
+    return ["game", "board_type", "object_type", "task", "source", "ablation", "value", "model", "episodes",
+            "played", "em", "cb", "es", "f1"], rows
+
+
+def errors(episodes: list[dict]) -> tuple[list[str], list[dict]]:
+    counts: dict[tuple, Counter] = defaultdict(Counter)
+    for e in episodes:
+        counts[(e["model"], e["game"], e["experiment"])][e["category"]] += 1
+    categories = sorted({c for counter in counts.values() for c in counter}, key=lambda c: (c != "success", c))
+    rows = []
+    for (model, game, experiment) in sorted(counts):
+        counter = counts[(model, game, experiment)]
+        rows.append({"model": model, "game": game, "experiment": experiment,
+                     "episodes": sum(counter.values()), **{c: counter.get(c, 0) for c in categories}})
+    return ["model", "game", "experiment", "episodes", *categories], rows
+
+
+def _write_csv(path: Path, header: list[str], rows: list[dict]) -> None:
+    with path.open("w", newline="", encoding="utf-8") as f:
+        writer = csv.DictWriter(f, fieldnames=header, lineterminator="\n")
+        writer.writeheader()
+        writer.writerows(rows)
+
+
+def _md(header: list[str], rows: list[list]) -> str:
+    out = ["| " + " | ".join(header) + " |", "|" + "|".join("---" for _ in header) + "|"]
+    out += ["| " + " | ".join("" if v is None else f"{v:.2f}" if isinstance(v, float) else str(v) for v in r) + " |"
+            for r in rows]
+    return "\n".join(out) + "\n"
+
+
+def table3_markdown(rows: list[dict], title: str, keys: list[str]) -> str:
+    """The paper's wide layout: one line per cell, EM / CB / ES per model side by side."""
+    models = sorted({r["model"] for r in rows})
+    cells: dict[tuple, dict] = {}
+    for r in rows:
+        cells.setdefault(tuple(r[k] for k in keys), {})[r["model"]] = r
+    header = [k.replace("_", " ") for k in keys] + [f"{m} {x}" for m in models for x in ("EM", "CB", "ES")]
+    body = []
+    for key, by_model in cells.items():
+        line = [TASK_NAMES.get(v, v) if k == "task" else v for k, v in zip(keys, key)]
+        for m in models:
+            r = by_model.get(m)
+            line += [r["em"], r["cb"], r["es"]] if r else ["", "", ""]
+        body.append(line)
+    played = {m: [r for r in rows if r["model"] == m] for m in models}
+    note = "; ".join(f"{m}: {sum(r['episodes'] for r in rs)} episodes, "
+                     f"{_pct([r['played'] / 100 for r in rs for _ in range(r['episodes'])]):.2f}% played"
+                     for m, rs in played.items())
+    return f"## {title}\n\nEM = exact match, CB = CodeBLEU, ES = execution success (%). {note}.\n\n" + _md(header, body)
+
+
+def run(args: argparse.Namespace) -> int:
+    episodes = collect(args.results, args.game)
+    out: Path = args.out
+    out.mkdir(parents=True, exist_ok=True)
+    written = []
+    header, rows = table3(episodes)
+    _write_csv(out / "table3.csv", header, rows)
+    md = "# SARTCo results (paper Table 3 layout)\n\n"
+    for game in sorted({r["game"] for r in rows}):
+        md += table3_markdown([r for r in rows if r["game"] == game], f"{game}",
+                              ["board_type", "object_type", "task", "source"]) + "\n"
+    (out / "table3.md").write_text(md, encoding="utf-8")
+    written += ["table3.md", "table3.csv"]
+    header, rows = ablations(episodes)
+    if rows:
+        _write_csv(out / "ablations.csv", header, rows)
+        md = "# Ablations (val split)\n\n"
+        for game in sorted({r["game"] for r in rows}):
+            md += table3_markdown([r for r in rows if r["game"] == game], game,
+                                  ["board_type", "object_type", "task", "source", "ablation", "value"]) + "\n"
+        (out / "ablations.md").write_text(md, encoding="utf-8")
+        written += ["ablations.md", "ablations.csv"]
+    header, rows = errors(episodes)
+    _write_csv(out / "errors.csv", header, rows)
+    md = "# Error categories (episodes per category)\n\n" + _md(header, [[r[h] for h in header] for r in rows])
+    (out / "errors.md").write_text(md, encoding="utf-8")
+    written += ["errors.md", "errors.csv"]
+    print(f"sartco report: {len(episodes)} episodes -> " + ", ".join(str(out / w) for w in written))
+    return 0
