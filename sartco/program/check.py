@@ -237,68 +237,58 @@ def instrument(tree: ast.Module) -> ast.Module:
     """Check every node and instrument in place; raise the Forbidden that comes first in the text.
 
     One iterative pass (no recursion limit to hit); leaves (names, constants) are handled
-    where they are met, because they make up two thirds of a typical tree."""
+    where they are met, because they make up two thirds of a typical tree. After an offence the
+    walk goes on (without the offending node's remaining children), so that the offence
+    reported is the first one in the source, not the first one visited."""
     todo = [tree]
+    pop, push = todo.pop, todo.append
     wrapped: set[int] = set()
     seen_loads: set[str] = set()  # names already checked in a load context
     offences: list[Forbidden] = []
+    fields_of, rules, name_type, const_type, load_type = FIELDS.get, RULES.get, ast.Name, ast.Constant, ast.Load
     while todo:
-        node = todo.pop()
+        node = pop()
         try:
-            _visit(node, todo, wrapped, seen_loads)
-        except Forbidden as exc:  # keep looking: report the offence that comes first in the text
+            t = type(node)
+            fields = fields_of(t)
+            if fields is None:
+                _fail(node, f"{WHAT.get(t) or t.__name__} is not allowed")
+            rule = rules(t)
+            if rule is not None:
+                rule(node)
+            for field in fields:
+                value = getattr(node, field)
+                if type(value) is not list:
+                    if value is None:
+                        continue
+                    value = [value]
+                    single = True
+                else:
+                    single = False
+                for i, child in enumerate(value):
+                    ct = type(child)
+                    if ct is const_type or child is None:
+                        continue
+                    if ct is name_type:
+                        if type(child.ctx) is load_type:
+                            if child.id not in seen_loads:
+                                _name(child, child.id, False)
+                                seen_loads.add(child.id)
+                        else:
+                            _name(child, child.id, True)
+                        continue
+                    new = _child(child, wrapped)
+                    if new is not child:
+                        if single:
+                            setattr(node, field, new)
+                        else:
+                            value[i] = new
+                    push(new)
+        except Forbidden as exc:
             offences.append(exc)
     if offences:
         raise min(offences, key=lambda exc: exc.position)
     return tree
-
-
-def _visit(node, todo, wrapped, seen_loads):
-    """Check one node and its leaf children; instrument; queue the other children."""
-    ast_type, name_type, const_type, load_type = ast.AST, ast.Name, ast.Constant, ast.Load
-    t = type(node)
-    fields = FIELDS.get(t)
-    if fields is None:
-        what = WHAT.get(t) or t.__name__
-        _fail(node, f"{what} is not allowed")
-    rule = RULES.get(t)
-    if rule is not None:
-        rule(node)
-    for field in fields:
-        value = getattr(node, field)
-        if type(value) is list:
-            for i, child in enumerate(value):
-                ct = type(child)
-                if ct is const_type or child is None:
-                    continue
-                if ct is name_type:
-                    if type(child.ctx) is load_type:
-                        if child.id not in seen_loads:
-                            _name(child, child.id, False)
-                            seen_loads.add(child.id)
-                    else:
-                        _name(child, child.id, True)
-                    continue
-                new = _child(child, wrapped)
-                if new is not child:
-                    value[i] = new
-                todo.append(new)
-        elif value is not None and isinstance(value, ast_type):
-            ct = type(value)
-            if ct is const_type:
-                continue
-            if ct is name_type:
-                if type(value.ctx) is load_type:
-                    if value.id not in seen_loads:
-                        _name(value, value.id, False)
-                        seen_loads.add(value.id)
-                else:
-                    _name(value, value.id, True)
-                continue
-            new = _child(value, wrapped)
-            if new is not value:
-                setattr(node, field, new)
-            todo.append(new)
 
 
 def prepare(source: str):

@@ -35,6 +35,7 @@ from .records import Execution, Limits
 E = ErrorCode
 BATCH = 32  # a call with fewer items than this uses one worker
 CHUNK = 256  # items per worker round trip
+PATIENCE = 0.002  # seconds to wait before reading more answers of a running batch
 START_TIMEOUT = 30.0
 _ROOT = str(Path(__file__).resolve().parents[2])
 _BOOT = (
@@ -115,7 +116,9 @@ class _Worker:
                 self.kill()
                 results.extend(_failed(E.RUNTIME_ERROR, f"sandbox unavailable: {exc}") for _ in todo)
                 break
-            for _ in todo:
+            for k in range(len(todo)):
+                if k and not self.lines:
+                    time.sleep(PATIENCE)  # let answers pile up: one wake-up reads many
                 try:
                     line = self._readline(time.monotonic() + limits.wall_time)
                 except (_Dead, OSError):
