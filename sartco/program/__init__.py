@@ -14,7 +14,12 @@ Layers (each module's docstring has the details):
   worker.py   the worker process loop (JSON lines over pipes, rlimits)
   pool.py     persistent workers, batching, hard kill on wall time, restarts; execute()
   compare.py  ES, mismatch category, cell precision/recall/F1
+  lines.py    one line of the `sartco execute` contract (parsed and answered inside the workers)
   cli.py      `sartco execute` (JSON lines); bench.py `sartco bench-execute`
+  gold.py     the published gold programs with the authors' boards (tests, benchmark)
+
+`execute_many(programs, rows, cols, limits, workers=None)` runs a batch (split over up to two
+worker processes); `shutdown()` kills the workers (they restart on the next call).
 """
 from .compare import compare
 from .pool import execute, execute_many, shutdown

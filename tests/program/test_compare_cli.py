@@ -102,3 +102,14 @@ def test_cli_board_size_and_user_errors():
     proc = subprocess.run([sys.executable, "-m", "sartco", "execute", "--rows", "0"], input="",
                           capture_output=True, text=True, timeout=60)
     assert proc.returncode == 2 and "Traceback" not in proc.stderr and "--rows" in proc.stderr
+
+
+def test_cli_hard_timeout_is_answered_in_order():
+    slow = "x = sum(sum(range(10**6)) for i in range(10**6))"
+    lines = [json.dumps({"id": "slow", "code": slow, "target": {"1:1": [W]}}),
+             json.dumps({"id": "after", "code": "put(board, 'washer', 'red', 1, 1)", "target": {"1:1": [W]}})]
+    slow_out, after = _run_cli(lines, "--wall-time", "1", "--workers", "1")
+    assert (slow_out["id"], slow_out["ok"], slow_out["error"], slow_out["es"], slow_out["category"]) == \
+        ("slow", False, "timeout", 0, "timeout")
+    assert (slow_out["precision"], slow_out["recall"]) == (0.0, 0.0)
+    assert (after["id"], after["ok"], after["es"]) == ("after", True, 1)
