@@ -15,6 +15,7 @@ import argparse
 import csv
 import json
 import math
+import re
 from collections import Counter, defaultdict
 from pathlib import Path
 
@@ -140,7 +141,8 @@ def errors(episodes: list[dict]) -> tuple[list[str], list[dict]]:
         counts[(e["model"], e["game"], e["experiment"])][e["category"]] += 1
     categories = sorted({c for counter in counts.values() for c in counter}, key=lambda c: (c != "success", c))
     rows = []
-    for (model, game, experiment) in sorted(counts):
+    natural = lambda key: [int(t) if t.isdigit() else t for t in re.split(r"(\d+)", "/".join(key))]  # noqa: E731
+    for (model, game, experiment) in sorted(counts, key=natural):
         counter = counts[(model, game, experiment)]
         rows.append({"model": model, "game": game, "experiment": experiment,
                      "episodes": sum(counter.values()), **{c: counter.get(c, 0) for c in categories}})
