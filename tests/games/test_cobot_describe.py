@@ -4,6 +4,7 @@ trip; scripted describer answers; bad results folders."""
 from __future__ import annotations
 
 import copy
+import importlib.util
 import json
 import math
 import re
@@ -15,8 +16,6 @@ from pathlib import Path
 import pytest
 
 from sartco.cli import main as sartco_main
-from sartco.clem.episodes import board_fields
-from sartco.instances.prompts import builder_prompt, instruction_text
 
 REPO = Path(__file__).resolve().parents[2]
 SLICE = REPO / "games" / "cobot_describe" / "in" / "instances_slice.json"
@@ -30,6 +29,14 @@ SCRIPTED = {
     "junk": ("Instruction: erere", "lose", "mismatch_location"),  # the follower builds nothing
     "moved object": (None, "lose", "mismatch_location"),  # a valid instruction, one row further up
 }
+
+
+def cobot_instruct_generator():
+    spec = importlib.util.spec_from_file_location(
+        "cobot_instruct_instancegenerator", REPO / "games" / "cobot_instruct" / "instancegenerator.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
 
 
 def clem(*args, cwd=REPO):
@@ -134,16 +141,12 @@ def test_round_trip_into_cobot_instruct(describe_run, tmp_path, play_episodes):
     assert manifest["config"]["instruction_sources"] == {"mock": 6} and manifest["defects"] == []
     assert manifest["files"] == {"simple_simple_test.json": 2, "regular_simple_test.json": 2,
                                  "regular_complex_test.json": 2}
-    instances, game_id = [], 0
+    instances = []
+    make_episode = cobot_instruct_generator().episode  # cobot_instruct's own instance format
     for name in manifest["files"]:
         for record in json.loads((out / name).read_text()):
             task = "repetition" if record["board_type"] == "regular" else "optimal_function"
-            text = instruction_text(record, task, "mock")
-            fields = board_fields(record, task)
-            instances.append({**fields, "game_id": game_id, "prompt": "",
-                              "turns": [builder_prompt(record, task, source="mock")],
-                              "instructions": [text], "gold_turns": [fields["gold_code"]]})
-            game_id += 1
+            instances.append({"game_id": len(instances), **make_episode(record, task, "mock", [])})
     experiment = {"name": "describer_mock_instructions", "task": "mixed", "source": "mock", "split": "test"}
     for model in ("mock", "rulebased"):
         results = play_episodes(instances, experiment, model=model)
