@@ -29,6 +29,7 @@ from pathlib import Path
 
 from clemcore.clemgame import GameInstanceGenerator
 
+from sartco.clem.episodes import board_fields
 from sartco.instances.examples import MAX_EXAMPLES, select_examples
 from sartco.instances.prompts import SECTIONS, builder_prompt, builder_turn, gold_code, instruction_text
 
@@ -72,7 +73,8 @@ def records(files: dict, board: str, split: str) -> list[dict]:
 
 
 def episode(record: dict, task: str, source: str, examples: list[dict], sections=SECTIONS) -> dict:
-    """One game instance: what the builder is told, what counts as right."""
+    """One game instance: the board's fields (sartco.clem.episodes.board_fields: target,
+    given_code, gold_code, ...), what the builder is told, and what `mock` answers per turn."""
     code = record["code"]
     if task == "first_order":
         steps = instruction_text(record, task, source)
@@ -83,13 +85,8 @@ def episode(record: dict, task: str, source: str, examples: list[dict], sections
         turns = [builder_prompt(record, task, examples, sections, source)]
         instructions = [instruction_text(record, task, source)]
         gold_turns = [gold_code(record, task)]
-    return {
-        "board_id": record["id"], "rows": record["rows"], "cols": record["cols"], "task": task,
-        "turns": turns, "instructions": instructions,
-        "given_code": code["repetition"]["function"] if task == "repetition" else "",
-        "gold_code": gold_code(record, task), "gold_turns": gold_turns,
-        "target": record["target"], "examples": [ex["id"] for ex in examples],
-    }
+    return {**board_fields(record, task), "source": source, "turns": turns, "instructions": instructions,
+            "gold_turns": gold_turns, "examples": [ex["id"] for ex in examples]}
 
 
 class CobotInstructInstanceGenerator(GameInstanceGenerator):

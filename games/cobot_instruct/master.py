@@ -19,14 +19,14 @@ answer again with complete code, up to that many times.
 """
 from __future__ import annotations
 
-from clemcore.clemgame import DialogueGameMaster, GameBenchmark, GameSpec, Player
+from clemcore.clemgame import DialogueGameMaster, Player
 from clemcore.clemgame.errors import ParseError
 
-from sartco.clem.builder import Builder
+from sartco.clem import benchmark  # the module, not the class: one GameBenchmark subclass per master.py
+from sartco.clem.builder import Builder, rulebased_code
 from sartco.clem.building import ATTEMPTS_KEY, BuildRecord, build, log_build, parse_failure
 from sartco.clem.outcomes import log_outcome, set_outcome
 from sartco.clem.parsing import parse_code
-from sartco.clem.pictures import attach_all
 from sartco.clem.scoring import BuildScorer
 
 GAME_NAME = "cobot_instruct"
@@ -53,16 +53,16 @@ class CobotInstruct(DialogueGameMaster):
 
     def _follow(self, turn: int, context: dict) -> str:
         """What the rule-based follower writes for this turn (model `rulebased`)."""
-        from sartco.follower import FollowError, follow, follow_turn
+        from sartco.follower import FollowError, follow_turn
         i = self.instance
         rows, cols = i.get("rows", 8), i.get("cols", 8)
-        try:
-            if i["task"] == "first_order" and len(i["instructions"]) > 1:
-                k = min(turn, len(i["instructions"]) - 1)
+        if i["task"] == "first_order" and len(i["instructions"]) > 1:  # one turn's puts
+            k = min(turn, len(i["instructions"]) - 1)
+            try:
                 return follow_turn(i["instructions"][k], i["instructions"][:k], rows, cols)
-            return follow(i["instructions"], i["task"], i.get("given_code", ""), rows, cols)
-        except FollowError as error:
-            return f"# I cannot follow these instructions: {error}"
+            except FollowError as error:
+                return f"# I cannot follow this instruction: {error}"
+        return rulebased_code(i["instructions"], i["task"], i.get("given_code", ""), rows, cols)
 
     def _parse_response(self, player: Player, response: str) -> str:
         return parse_code(response)
@@ -102,17 +102,6 @@ class CobotInstruct(DialogueGameMaster):
         log_outcome(self)
 
 
-class CobotInstructBenchmark(GameBenchmark):
-
-    def __init__(self, game_spec: GameSpec):
-        super().__init__(game_spec)
-
-    def create_game_master(self, experiment: dict, player_models) -> DialogueGameMaster:
-        return CobotInstruct(self.game_spec, experiment, player_models)
-
-    def create_game_scorer(self, experiment: dict, game_instance: dict) -> BuildScorer:
-        return BuildScorer(self.game_name, experiment, game_instance)
-
-    def compute_scores(self, interaction_files):
-        super().compute_scores(interaction_files)
-        attach_all(interaction_files)  # board pictures for `clem transcribe`
+class CobotInstructBenchmark(benchmark.BuildBenchmark):
+    master_class = CobotInstruct
+    scorer_class = BuildScorer
