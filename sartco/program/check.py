@@ -19,7 +19,9 @@ so a program can neither reach nor shadow them):
   condition of every comprehension `for`;
 - `a + b`, `a * b`, `a ** b`, `a << b`, `a % b` (and their augmented forms) become checked
   calls that refuse to build too-long sequences or too-large integers, and refuse printf-style
-  `%` formatting (its widths are a memory bomb);
+  `%` formatting (its widths are a memory bomb); `a + 1`, `1 + a`, `a += 1` (an int constant
+  of at most 64 bits, or a float) stay plain: they make a number one bit longer at most, or fail
+  with TypeError, and never a sequence;
 - `x.m` becomes `$attr(x, 'm')`, f-strings `$len(f'...')`, displays with `*x` `$len([...])`;
 - f-string format specs must be constant, with numbers of at most three digits.
 """
@@ -106,12 +108,19 @@ def _loc(new, old):
     return new
 
 
+_LOAD = ast.Load()
+
+
 def _call(helper: str, args: list, old) -> ast.Call:
-    return _loc(ast.Call(_loc(ast.Name(helper, ast.Load()), old), args, []), old)
+    at = {"lineno": old.lineno, "col_offset": old.col_offset,
+          "end_lineno": old.end_lineno, "end_col_offset": old.end_col_offset}
+    return ast.Call(ast.Name(helper, _LOAD, **at), args, [], **at)
 
 
 def _tick(old) -> ast.Expr:
-    return _loc(ast.Expr(_call("$t", [], old)), old)
+    at = {"lineno": old.lineno, "col_offset": old.col_offset,
+          "end_lineno": old.end_lineno, "end_col_offset": old.end_col_offset}
+    return ast.Expr(ast.Call(ast.Name("$t", _LOAD, **at), [], [], **at), **at)
 
 
 # --- rules: checks (and in-place instrumentation) of a node itself ---------------------------
@@ -181,9 +190,21 @@ def _w_attribute(n):
     return _call("$attr", [n.value, _loc(ast.Constant(n.attr), n)], n)
 
 
+def _small_number(node) -> bool:
+    """A constant int (not bool) or float of at most 64 bits: adding it to anything gives a
+    number at most one bit longer, or a TypeError; it can never build a sequence."""
+    if type(node) is not ast.Constant:
+        return False
+    t = type(node.value)
+    return t is float or (t is int and -(1 << 64) < node.value < (1 << 64))
+
+
 def _w_binop(n):
-    helper = CHECKED_OPS.get(type(n.op))
-    return n if helper is None else _call(helper, [n.left, n.right], n)
+    op = type(n.op)
+    helper = CHECKED_OPS.get(op)
+    if helper is None or (op is ast.Add and (_small_number(n.right) or _small_number(n.left))):
+        return n
+    return _call(helper, [n.left, n.right], n)
 
 
 def _w_augassign(n):
@@ -191,7 +212,7 @@ def _w_augassign(n):
     if type(target) is ast.Attribute:
         _fail(n, f"assigning to an attribute (.{target.attr}) is not allowed")
     helper = INPLACE_OPS.get(op)
-    if helper is None:
+    if helper is None or (op is ast.Add and _small_number(n.value)):
         return n
     if type(target) is ast.Name:
         load = _loc(ast.Name(target.id, ast.Load()), target)
@@ -212,7 +233,7 @@ def _w_joined(n, wrapped):
 
 
 def _w_display(n, wrapped):
-    if type(n.ctx) is ast.Load and any(type(e) is ast.Starred for e in n.elts):
+    if type(n.ctx) is ast.Load and ast.Starred in map(type, n.elts):
         wrapped.add(id(n))
         return _call("$len", [n], n)
     return n
@@ -222,15 +243,50 @@ WRAPS = {A.Attribute: _w_attribute, A.BinOp: _w_binop, A.AugAssign: _w_augassign
 WRAPS_ONCE = {A.JoinedStr: _w_joined, A.List: _w_display, A.Tuple: _w_display, A.Set: _w_display}
 
 
-def _child(child, wrapped):
-    t = type(child)
-    w = WRAPS.get(t)
-    if w is not None:
-        return w(child)
-    w = WRAPS_ONCE.get(t)
-    if w is not None and id(child) not in wrapped:
-        return w(child, wrapped)
-    return child
+def _w_attribute_(n, wrapped):
+    return _w_attribute(n)
+
+
+def _w_binop_(n, wrapped):
+    return _w_binop(n)
+
+
+def _w_augassign_(n, wrapped):
+    return _w_augassign(n)
+
+
+def _w_joined_(n, wrapped):
+    return n if id(n) in wrapped else _w_joined(n, wrapped)
+
+
+def _w_display_(n, wrapped):
+    if type(n.ctx) is not ast.Load or ast.Starred not in map(type, n.elts) or id(n) in wrapped:
+        return n
+    return _w_display(n, wrapped)
+
+
+# every wrap, called as wrap(node, wrapped); the *_ONCE ones leave a node they wrapped alone
+WRAP_ANY = {
+    A.Attribute: _w_attribute_, A.BinOp: _w_binop_, A.AugAssign: _w_augassign_,
+    A.JoinedStr: _w_joined_, A.List: _w_display_, A.Tuple: _w_display_, A.Set: _w_display_,
+}
+
+
+def _is_list_field(t: type, field: str) -> bool:
+    """Whether a field of node type t holds a list of nodes (from the grammar: `*` fields)."""
+    if t in (A.Lambda, A.IfExp):
+        return False
+    return field in {
+        "body", "targets", "orelse", "values", "elts", "keys", "generators", "comparators",
+        "keywords", "ifs", "posonlyargs", "kwonlyargs", "kw_defaults", "defaults",
+    } or (field == "args" and t in (A.Call, A.arguments))
+
+
+# per allowed node type: (rule or None, fields holding one node or None, fields holding lists)
+PLAN: dict[type, tuple] = {
+    t: (RULES.get(t), tuple(f for f in fs if not _is_list_field(t, f)), tuple(f for f in fs if _is_list_field(t, f)))
+    for t, fs in FIELDS.items()
+}
 
 
 def instrument(tree: ast.Module) -> ast.Module:
@@ -245,26 +301,41 @@ def instrument(tree: ast.Module) -> ast.Module:
     wrapped: set[int] = set()
     seen_loads: set[str] = set()  # names already checked in a load context
     offences: list[Forbidden] = []
-    fields_of, rules, name_type, const_type, load_type = FIELDS.get, RULES.get, ast.Name, ast.Constant, ast.Load
+    plan_of, wrap_of, name_type, const_type, load_type = PLAN.get, WRAP_ANY.get, ast.Name, ast.Constant, ast.Load
     while todo:
         node = pop()
         try:
             t = type(node)
-            fields = fields_of(t)
-            if fields is None:
+            plan = plan_of(t)
+            if plan is None:
                 _fail(node, f"{WHAT.get(t) or t.__name__} is not allowed")
-            rule = rules(t)
+            rule, singles, lists = plan
             if rule is not None:
                 rule(node)
-            for field in fields:
+            for field in singles:
+                child = getattr(node, field)
+                if child is None:
+                    continue
+                ct = type(child)
+                if ct is const_type:
+                    continue
+                if ct is name_type:
+                    if type(child.ctx) is load_type:
+                        if child.id not in seen_loads:
+                            _name(child, child.id, False)
+                            seen_loads.add(child.id)
+                    else:
+                        _name(child, child.id, True)
+                    continue
+                wrap = wrap_of(ct)
+                if wrap is not None:
+                    new = wrap(child, wrapped)
+                    if new is not child:
+                        setattr(node, field, new)
+                        child = new
+                push(child)
+            for field in lists:
                 value = getattr(node, field)
-                if type(value) is not list:
-                    if value is None:
-                        continue
-                    value = [value]
-                    single = True
-                else:
-                    single = False
                 for i, child in enumerate(value):
                     ct = type(child)
                     if ct is const_type or child is None:
@@ -277,13 +348,13 @@ def instrument(tree: ast.Module) -> ast.Module:
                         else:
                             _name(child, child.id, True)
                         continue
-                    new = _child(child, wrapped)
-                    if new is not child:
-                        if single:
-                            setattr(node, field, new)
-                        else:
+                    wrap = wrap_of(ct)
+                    if wrap is not None:
+                        new = wrap(child, wrapped)
+                        if new is not child:
                             value[i] = new
-                    push(new)
+                            child = new
+                    push(child)
         except Forbidden as exc:
             offences.append(exc)
     if offences:

@@ -22,18 +22,22 @@ from sartco.world import ErrorCode
 from .compare import compare
 
 KEY = re.compile(r"\d+:\d+")
+# the output holds only fresh dicts, lists and strings (no cycles): skip the encoder's cycle check
+encode = json.JSONEncoder(check_circular=False).encode
 
 
 def _check_cells(cells) -> str | None:
     if type(cells) is not dict:
         return "target must be an object of cells"
+    match = KEY.fullmatch
     for key, stack in cells.items():
-        if not KEY.fullmatch(key):
+        if not match(key):
             return f"target cell key {key!r:.40} is not 'row:col'"
-        if type(stack) is not list or not all(
-            type(p) is list and len(p) == 2 and type(p[0]) is str and type(p[1]) is str for p in stack
-        ):
+        if type(stack) is not list:
             return f"target cell {key} must be a list of [shape, colour] pairs"
+        for p in stack:
+            if type(p) is not list or len(p) != 2 or type(p[0]) is not str or type(p[1]) is not str:
+                return f"target cell {key} must be a list of [shape, colour] pairs"
     return None
 
 
@@ -77,6 +81,6 @@ def handle(number: int, raw: bytes, run) -> str:
     """The output line (JSON text) for one input line; `run(code)` -> (ok, error, message, cells)."""
     ident, code, target, problem = parse_line(number, raw)
     if problem is not None:
-        return json.dumps(malformed(ident, problem))
+        return encode(malformed(ident, problem))
     ok, error, message, cells = run(code)
-    return json.dumps(answer(ident, ok, error, message, cells, target))
+    return encode(answer(ident, ok, error, message, cells, target))

@@ -43,7 +43,7 @@ def _limit(kind, soft):
 
 
 def main() -> int:
-    from .lines import handle
+    from .lines import encode, handle
     from .records import Limits
     from .runtime import run
 
@@ -55,7 +55,6 @@ def main() -> int:
     inp, out = sys.stdin.buffer, sys.stdout.buffer
     out.write(b'"ready"\n')
     out.flush()
-    dumps = json.dumps
     while True:
         header = inp.readline()
         if not header:
@@ -76,7 +75,7 @@ def main() -> int:
         for item in items:
             try:
                 if request["mode"] == "code":
-                    answer = dumps(run(json.loads(item), rows, cols, limits, cache))
+                    answer = encode(run(json.loads(item), rows, cols, limits, cache))
                 else:
                     number, _, raw = item.partition(b" ")
                     answer = handle(int(number), raw, run_code)
