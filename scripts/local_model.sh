@@ -5,12 +5,12 @@
 # Registration happens in a scratch folder: the user's own key.json is never read or written.
 # The server is stopped on every exit path (trap on EXIT, INT and TERM).
 #
-# Settings (environment): PORT (8765), EPISODES per experiment (2), OUT (results-local),
+# Settings (environment): PORT (8765), EPISODES per experiment (3), OUT (results-local),
 # MAX_TOKENS (300), EXPERIMENTS_INSTRUCT / EXPERIMENTS_DESCRIBE (regex filters on experiment names).
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 PORT="${PORT:-8765}"
-EPISODES="${EPISODES:-2}"
+EPISODES="${EPISODES:-3}"
 OUT="$(cd "$ROOT" && mkdir -p "${OUT:-results-local}" && cd "${OUT:-results-local}" && pwd)"
 MAX_TOKENS="${MAX_TOKENS:-300}"
 MODEL_NAME="gemma3-270m-local"
