@@ -22,6 +22,7 @@ from sartco.world import ErrorCode
 from .compare import compare
 
 KEY = re.compile(r"\d+:\d+")
+KEYS = re.compile(r"\d+:\d+(?:,\d+:\d+)*")
 # the output holds only fresh dicts, lists and strings (no cycles): skip the encoder's cycle check
 encode = json.JSONEncoder(check_circular=False).encode
 
@@ -29,10 +30,12 @@ encode = json.JSONEncoder(check_circular=False).encode
 def _check_cells(cells) -> str | None:
     if type(cells) is not dict:
         return "target must be an object of cells"
-    match = KEY.fullmatch
+    joined = ",".join(cells)  # all keys at once: as many commas as separators, each key row:col
+    if cells and not (KEYS.fullmatch(joined) and joined.count(",") == len(cells) - 1):
+        for key in cells:
+            if not KEY.fullmatch(key):
+                return f"target cell key {key!r:.40} is not 'row:col'"
     for key, stack in cells.items():
-        if not match(key):
-            return f"target cell key {key!r:.40} is not 'row:col'"
         if type(stack) is not list:
             return f"target cell {key} must be a list of [shape, colour] pairs"
         for p in stack:
