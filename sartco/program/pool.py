@@ -36,6 +36,8 @@ E = ErrorCode
 BATCH = 32  # a call with fewer items than this uses one worker
 CHUNK = 256  # items per worker round trip
 PATIENCE = 0.002  # seconds to wait before reading more answers of a running batch
+PATIENT_UNTIL = 16  # ...unless only this many answers are left: read them as they come, so the
+# worker does not sit idle, its chunk finished, while the parent sleeps
 START_TIMEOUT = 30.0
 _ROOT = str(Path(__file__).resolve().parents[2])
 _BOOT = (
@@ -117,7 +119,7 @@ class _Worker:
                 results.extend(_failed(E.RUNTIME_ERROR, f"sandbox unavailable: {exc}") for _ in todo)
                 break
             for k in range(len(todo)):
-                if k and not self.lines:
+                if k and not self.lines and len(todo) - k > PATIENT_UNTIL:
                     time.sleep(PATIENCE)  # let answers pile up: one wake-up reads many
                 try:
                     line = self._readline(time.monotonic() + limits.wall_time)
