@@ -14,8 +14,13 @@ Episode = one instance of in/instances.json:
   gold_turns    the gold code of each turn (what `mock` answers)
   target        the target board in canonical cells form; rows, cols; task
 Multi-turn: the builder's code accumulates over the turns and is executed once at the end.
-Repair (experiment field repair_attempts > 0): a failed build is fed back and the builder may
-answer again with complete code, up to that many times.
+Feedback experiments (experiment field `attempts` N > 1; the older `repair_attempts` n means
+N = n + 1): after a failed attempt the builder gets sartco.clem.feedback's message (error code
+and message, or "the board you built differs", with the built board as grid_text; never the
+target) and answers with the complete corrected code, run on a fresh board, up to N attempts.
+An answer without code is then a failed attempt (parse_error) like any other; the episode is
+aborted only when no attempt held code. Every attempt's record is logged under
+`sartco_attempts`, the last one under `sartco_build` (scored).
 """
 from __future__ import annotations
 
@@ -25,16 +30,12 @@ from clemcore.clemgame.errors import ParseError
 from sartco.clem import benchmark  # the module, not the class: one GameBenchmark subclass per master.py
 from sartco.clem.builder import Builder, rulebased_code
 from sartco.clem.building import ATTEMPTS_KEY, BuildRecord, build, log_build, parse_failure
-from sartco.clem.outcomes import log_outcome, set_outcome
+from sartco.clem.feedback import feedback_for, max_attempts
+from sartco.clem.outcomes import log_outcome, set_attempts_outcome
 from sartco.clem.parsing import parse_code
 from sartco.clem.scoring import BuildScorer
 
 GAME_NAME = "cobot_instruct"
-
-
-def repair_prompt(record: BuildRecord) -> str:
-    return ("Your code did not build the target board: "
-            f"{record.summary()}\nWrite the complete corrected code.")
 
 
 class CobotInstruct(DialogueGameMaster):
@@ -43,9 +44,9 @@ class CobotInstruct(DialogueGameMaster):
         self.instance = instance
         self.turns: list[str] = instance["turns"]
         self.codes: list[str] = []
-        self.attempts: list[dict] = []
-        self.repairs_left = int(self.experiment.get("repair_attempts", 0))
-        self.repairing = False
+        self.attempts: list[BuildRecord] = []
+        self.max_attempts = max_attempts(self.experiment)
+        self.repairing = False  # after the first attempt: every answer is a complete program
         self.builder = Builder(self.player_models[0], gold_turns=instance["gold_turns"], rulebased=self._follow,
                                script=instance.get("script"))
         self.add_player(self.builder, initial_prompt=instance.get("prompt") or None,
@@ -56,7 +57,7 @@ class CobotInstruct(DialogueGameMaster):
         from sartco.follower import FollowError, follow_turn
         i = self.instance
         rows, cols = i.get("rows", 8), i.get("cols", 8)
-        if i["task"] == "first_order" and len(i["instructions"]) > 1:  # one turn's puts
+        if i["task"] == "first_order" and len(i["instructions"]) > 1 and not self.repairing:  # one turn's puts
             k = min(turn, len(i["instructions"]) - 1)
             try:
                 return follow_turn(i["instructions"][k], i["instructions"][:k], rows, cols)
@@ -78,27 +79,30 @@ class CobotInstruct(DialogueGameMaster):
         i = self.instance
         record = build("\n".join(self.codes), i["target"], given_code=i.get("given_code", ""),
                        rows=i.get("rows", 8), cols=i.get("cols", 8), turn_codes=self.codes)
-        self.attempts.append(record.to_json())
-        if record.es or self.repairs_left <= 0:
-            log_build(self, record)
-            set_outcome(self.state, record.category)
-            return
-        log_build(self, record, final=False)
-        self.repairs_left -= 1
-        self.repairing = True
-        self.set_context_for(self.builder, repair_prompt(record))
+        self._end_attempt(record)
 
     def _on_parse_error(self, error: ParseError):
         i = self.instance
         record = parse_failure(i["target"], error.reason or "no code found", turn_codes=self.codes,
                                rows=i.get("rows", 8), cols=i.get("cols", 8))
-        self.attempts.append(record.to_json())
-        log_build(self, record)
-        set_outcome(self.state, record.category)
+        self._end_attempt(record)
+
+    def _end_attempt(self, record: BuildRecord):
+        """One attempt is over: end the episode (success or no attempt left) or feed the failure back."""
+        self.attempts.append(record)
+        left = self.max_attempts - len(self.attempts)
+        if record.es or left <= 0:
+            log_build(self, record)
+            set_attempts_outcome(self.state, [a.category for a in self.attempts])
+            return
+        log_build(self, record, final=False)
+        self.repairing = True
+        self.codes = []
+        self.set_context_for(self.builder, feedback_for(record, attempts_left=left))
 
     def _on_after_game(self):
-        if len(self.attempts) > 1:
-            self.log_key(ATTEMPTS_KEY, self.attempts)
+        if self.max_attempts > 1:
+            self.log_key(ATTEMPTS_KEY, [a.to_json() for a in self.attempts])
         log_outcome(self)
 
 

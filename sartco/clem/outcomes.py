@@ -4,7 +4,11 @@
 - the program raised, broke a rule, hit a budget     -> Outcome.FAILURE (lost, category recorded)
 - the program ran and built another board            -> Outcome.FAILURE (lost, mismatch category)
 - the program built the target                       -> Outcome.SUCCESS
-Games call `outcome_for` / `set_outcome` and `log_outcome`; nothing else maps codes to outcomes.
+Feedback (repair) experiments, several attempts: the last attempt decides, except that a last
+attempt without code loses (the builder did play) unless no attempt held code at all (aborted,
+as in the paper's protocol) - `outcome_of_attempts`.
+Games call `outcome_for` / `set_outcome` / `outcome_of_attempts` and `log_outcome`; nothing else
+maps codes to outcomes.
 """
 from __future__ import annotations
 
@@ -57,6 +61,25 @@ def outcome_for(category: str | ErrorCode | None) -> Outcome:
 def set_outcome(state, category: str | ErrorCode | None) -> Outcome:
     """Move a clemcore GameState to the outcome of `category`."""
     outcome = outcome_for(category)
+    {Outcome.SUCCESS: state.succeed, Outcome.FAILURE: state.failed, Outcome.ABORTED: state.abort}[outcome]()
+    return outcome
+
+
+def outcome_of_attempts(categories) -> Outcome:
+    """The outcome of an episode whose attempts ended in these categories, in order (one
+    attempt: the same as outcome_for)."""
+    categories = list(categories)
+    if not categories:
+        raise ValueError("an episode without attempts has no outcome")
+    outcome = outcome_for(categories[-1])
+    if outcome is Outcome.ABORTED and any(outcome_for(c) is not Outcome.ABORTED for c in categories):
+        return Outcome.FAILURE
+    return outcome
+
+
+def set_attempts_outcome(state, categories) -> Outcome:
+    """Move a clemcore GameState to the outcome of these attempts (outcome_of_attempts)."""
+    outcome = outcome_of_attempts(categories)
     {Outcome.SUCCESS: state.succeed, Outcome.FAILURE: state.failed, Outcome.ABORTED: state.abort}[outcome]()
     return outcome
 

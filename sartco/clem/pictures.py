@@ -7,6 +7,9 @@ the pictures are written when the episode is scored (`clem score`, which runs be
 transcribe`): `attach_pictures` writes boards.svg (target beside built, differing cells framed)
 next to interactions.json and links it, by absolute path, into the episode's 'board' event.
 Re-scoring after moving a results folder rewrites the links.
+Feedback experiments (every attempt logged under `sartco_attempts`, one board event each):
+boards_1.svg, boards_2.svg, ... one per attempt, linked to that attempt's board event; boards.svg
+is still written for the final build.
 """
 from __future__ import annotations
 
@@ -16,10 +19,11 @@ from pathlib import Path
 
 from sartco.world.render import diff_svg
 
-from .building import BOARD_EVENT, BUILD_KEY
+from .building import ATTEMPTS_KEY, BOARD_EVENT, BUILD_KEY
 
 log = logging.getLogger(__name__)
 PICTURE = "boards.svg"
+ATTEMPT_PICTURE = "boards_{}.svg"  # attempt 1, 2, ...
 
 
 def attach_pictures(interactions_file: str | Path) -> bool:
@@ -30,18 +34,34 @@ def attach_pictures(interactions_file: str | Path) -> bool:
     record = interactions.get(BUILD_KEY)
     if record is None:
         return False
-    picture = (interactions_file.parent / PICTURE).resolve()
-    picture.write_text(diff_svg(record["target"], record["cells"], record.get("rows", 8), record.get("cols", 8)),
-                       encoding="utf-8")
+    folder = interactions_file.parent
+    picture = _draw(folder / PICTURE, record)
     events = [e for turn in interactions.get("turns", []) for e in turn
               if e.get("from") == "GM" and e.get("to") == "GM" and e.get("action", {}).get("type") == BOARD_EVENT]
+    attempts = interactions.get(ATTEMPTS_KEY) or []
+    if attempts:
+        links = [[str(_draw(folder / ATTEMPT_PICTURE.format(k), a))] for k, a in enumerate(attempts, 1)]
+    else:
+        links = [[str(picture)]]
     if not events:
         return True
-    action = events[-1]["action"]
-    if action.get("image") != [str(picture)]:
-        action["image"] = [str(picture)]
+    changed = False
+    # the last events are the attempts' (a game logs one board event per attempt, in order)
+    for event, link in zip(events[-len(links):], links[-len(events):]):
+        if event["action"].get("image") != link:
+            event["action"]["image"] = link
+            changed = True
+    if changed:
         interactions_file.write_text(json.dumps(interactions, indent=2, ensure_ascii=False), encoding="utf-8")
     return True
+
+
+def _draw(path: Path, record: dict) -> Path:
+    """Target beside built board (differing cells framed), as SVG at `path`; the absolute path."""
+    path = path.resolve()
+    path.write_text(diff_svg(record["target"], record["cells"], record.get("rows", 8), record.get("cols", 8)),
+                    encoding="utf-8")
+    return path
 
 
 def attach_all(interaction_files) -> int:

@@ -10,6 +10,16 @@ Episode scores (scores.json):
   Error Family       success | parse | python | world | sandbox | mismatch
   Puts               pieces placed by the executed program
 Aborted / Success / Lose come from the game's own log (sartco.clem.outcomes.log_outcome).
+
+Feedback experiments (experiment field `attempts` N > 1, sartco.clem.feedback) add:
+  ES@1               execution success of the first attempt (0/1; NaN when aborted)
+  ES@N               execution success of the last attempt (= Execution Success)
+  Attempts           attempts used (1..N)
+  Max Attempts       N
+  Attempt Categories the category of each attempt in order, joined by "," (a string, like
+                     Error Category: clem eval keeps it in raw.csv and uses only Main Score/Aborted)
+The other scores (and Main Score = 100 x final ES) are those of the last attempt. A last
+attempt without code after attempts with code is lost, not aborted: ES/EM/CodeBLEU/cell scores 0.
 """
 from __future__ import annotations
 
@@ -17,10 +27,12 @@ import math
 
 from clemcore.clemgame import GameScorer, metrics
 
-from .building import BUILD_KEY, BuildRecord
+from .building import ATTEMPTS_KEY, BUILD_KEY, BuildRecord
+from .feedback import max_attempts
 
 NAN = float("nan")
 SCORES = ("Execution Success", "Exact Match", "CodeBLEU", "Cell Precision", "Cell Recall", "Cell F1")
+CATEGORY_SEPARATOR = ","  # in Attempt Categories
 
 
 class BuildScorer(GameScorer):
@@ -40,6 +52,7 @@ class BuildScorer(GameScorer):
         aborted = bool(interactions.get(metrics.METRIC_ABORTED, 0))
         data = interactions.get(BUILD_KEY)
         record = BuildRecord.from_json(data) if data else None
+        self.log_attempt_scores(interactions, record, aborted)
         if aborted or record is None:
             for name in SCORES:
                 self.log_episode_score(name, NAN)
@@ -50,9 +63,10 @@ class BuildScorer(GameScorer):
             self.log_episode_score(metrics.BENCH_SCORE, NAN)
             return
         gold = self.game_instance[self.gold_key]
+        no_code = record.error == "parse_error"  # a feedback episode's last answer held no code
         self.log_episode_score("Execution Success", int(record.es))
-        self.log_episode_score("Exact Match", int(exact_match(record.builder_code, gold)))
-        self.log_episode_score("CodeBLEU", float(code_bleu(record.builder_code, gold)))
+        self.log_episode_score("Exact Match", 0 if no_code else int(exact_match(record.builder_code, gold)))
+        self.log_episode_score("CodeBLEU", 0.0 if no_code else float(code_bleu(record.builder_code, gold)))
         self.log_episode_score("Cell Precision", record.precision)
         self.log_episode_score("Cell Recall", record.recall)
         self.log_episode_score("Cell F1", record.f1)
@@ -60,6 +74,20 @@ class BuildScorer(GameScorer):
         self.log_episode_score("Error Family", record.family)
         self.log_episode_score("Puts", record.puts)
         self.log_episode_score(metrics.BENCH_SCORE, 100.0 * record.es)
+
+    def log_attempt_scores(self, interactions: dict, final: BuildRecord | None, aborted: bool) -> None:
+        """ES@1, ES@N, Attempts, Max Attempts, Attempt Categories - only in feedback experiments."""
+        n = max_attempts(self.experiment)
+        if n <= 1:
+            return
+        attempts = [BuildRecord.from_json(a) for a in interactions.get(ATTEMPTS_KEY) or []]
+        if not attempts and final is not None:
+            attempts = [final]
+        self.log_episode_score("ES@1", NAN if aborted or not attempts else int(attempts[0].es))
+        self.log_episode_score("ES@N", NAN if aborted or not attempts else int(attempts[-1].es))
+        self.log_episode_score("Attempts", len(attempts))
+        self.log_episode_score("Max Attempts", n)
+        self.log_episode_score("Attempt Categories", CATEGORY_SEPARATOR.join(a.category for a in attempts))
 
 
 def is_nan(value) -> bool:
