@@ -1,8 +1,9 @@
 """Build the episodes of cobot_instruct from SARTCo datasets (docs/ARCHITECTURE.md, "Datasets").
 
     python games/cobot_instruct/instancegenerator.py                   # in/instances.json
+                                                                       # + in/instances_feedback.json
     python games/cobot_instruct/instancegenerator.py --published instances/published
-                                                                       # + in/instances_published.json
+                                               # in/instances_published.json + ..._published_feedback.json
 
 in/instances.json (committed) comes from a generated dataset (default instances/v1):
   - the template cells of the paper's Table 3 on the test split, one experiment each;
@@ -18,6 +19,14 @@ end in _examples_<k> or _without_<section>. In-context examples always come from
 generated dataset's train split (the published data has no simple-board train split) and show
 template instructions with gold code of the task's style (sartco.instances.examples/prompts).
 Each experiment and the file record the dataset version, source and seed, and this generator's seed.
+
+Feedback experiments (beyond the paper, issue 7) go to a file of their own,
+in/instances_feedback.json (in/instances_published_feedback.json for the published cells), so
+that a plain `clem run -g cobot_instruct` plays the paper's protocol only and instances.json
+does not carry every test prompt twice: one experiment per Table 3 cell, `<cell>_feedback`,
+with the same episodes and the fields `attempts` (N, default 3: the first attempt plus up to
+N - 1 repairs after execution feedback, sartco.clem.feedback) and `feedback_of` (the cell's name).
+    clem run -g cobot_instruct -m mock -i instances_feedback [-e sb_so_first_order_template_feedback]
 """
 from __future__ import annotations
 
@@ -37,6 +46,8 @@ GAME_DIR = Path(__file__).resolve().parent
 REPO = GAME_DIR.parents[1]
 N_EXAMPLES = 5          # in-context examples in the Table 3 experiments
 ABLATION_EPISODES = 10  # episodes per ablation experiment (val split)
+FEEDBACK_ATTEMPTS = 3   # attempts per episode in the feedback experiments
+FEEDBACK_SUFFIX = "_feedback"
 
 BOARDS = {"sb_so": ("simple", "simple"), "rb_so": ("regular", "simple"), "rb_co": ("regular", "complex")}
 # the cells of the paper's Table 3: (board/object, task, sources from the generated data, from the published data)
@@ -91,15 +102,22 @@ def episode(record: dict, task: str, source: str, examples: list[dict], sections
 
 class CobotInstructInstanceGenerator(GameInstanceGenerator):
 
-    def __init__(self):
+    def __init__(self, feedback_attempts: int | None = None):
+        """feedback_attempts: None for the paper's experiments; N >= 2 for the feedback experiments
+        (the Table 3 cells only, named <cell>_feedback, N attempts per episode)."""
         super().__init__(str(GAME_DIR))
+        self.feedback_attempts = feedback_attempts
 
     def experiment(self, name: str, board: str, task: str, source: str, split: str, dataset: dict,
                    ablation: dict | None = None):
         board_type, object_type = BOARDS[board]
+        feedback = {}
+        if self.feedback_attempts is not None:
+            feedback = {"attempts": self.feedback_attempts, "feedback_of": name}
+            name += FEEDBACK_SUFFIX
         exp = self.add_experiment(name)
         exp.update(board_type=board_type, object_type=object_type, task=task, source=source, split=split,
-                   ablation=ablation, dataset=dataset)
+                   ablation=ablation, **feedback, dataset=dataset)
         exp.move_to_end("game_instances")
         return exp
 
@@ -121,6 +139,8 @@ class CobotInstructInstanceGenerator(GameInstanceGenerator):
                 for source in sources:
                     exp = self.experiment(f"{board}_{task}_{source}", board, task, source, "test", info)
                     self.add_episodes(exp, records(files, board, "test"), task, source, pools[board], seed, n_examples)
+            if self.feedback_attempts is not None:
+                return  # the feedback experiments mirror the Table 3 cells only
             for board, task, sources, _ in CELLS:
                 val = records(files, board, "val")[:ablation_episodes]
                 for k in range(MAX_EXAMPLES + 1):
@@ -149,22 +169,29 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--dataset", type=Path, default=REPO / "instances" / "v1", help="generated dataset folder")
     parser.add_argument("--published", type=Path, default=None,
-                        help="imported published dataset folder: write in/instances_published.json instead")
+                        help="imported published dataset folder: write in/instances_published.json "
+                             "and in/instances_published_feedback.json instead")
     parser.add_argument("--seed", type=int, default=42, help="seed of the in-context example choice")
     parser.add_argument("--examples", type=int, default=N_EXAMPLES, help="in-context examples (Table 3 cells)")
     parser.add_argument("--ablation-episodes", type=int, default=ABLATION_EPISODES)
+    parser.add_argument("--attempts", type=int, default=FEEDBACK_ATTEMPTS,
+                        help=f"attempts per episode in the feedback experiments (default {FEEDBACK_ATTEMPTS})")
     args = parser.parse_args(argv)
-    try:
-        gen = CobotInstructInstanceGenerator()
-        name = "instances.json" if args.published is None else "instances_published.json"
-        path = gen.generate(name, seed=args.seed, dataset_dir=args.dataset.resolve(),
-                            published_dir=args.published.resolve() if args.published else None,
-                            n_examples=args.examples, ablation_episodes=args.ablation_episodes)
-    except (UserError, KeyError, ValueError) as exc:
-        print(f"instancegenerator: {exc}", file=sys.stderr)
+    if args.attempts < 2:
+        print(f"instancegenerator: --attempts must be at least 2, not {args.attempts}", file=sys.stderr)
         return 2
-    exps = gen.instances["experiments"]
-    print(f"{path}: {len(exps)} experiments, {sum(len(e['game_instances']) for e in exps)} episodes")
+    stem = "instances" if args.published is None else "instances_published"
+    for name, attempts in ((f"{stem}.json", None), (f"{stem}{FEEDBACK_SUFFIX}.json", args.attempts)):
+        try:
+            gen = CobotInstructInstanceGenerator(feedback_attempts=attempts)
+            path = gen.generate(name, seed=args.seed, dataset_dir=args.dataset.resolve(),
+                                published_dir=args.published.resolve() if args.published else None,
+                                n_examples=args.examples, ablation_episodes=args.ablation_episodes)
+        except (UserError, KeyError, ValueError) as exc:
+            print(f"instancegenerator: {exc}", file=sys.stderr)
+            return 2
+        exps = gen.instances["experiments"]
+        print(f"{path}: {len(exps)} experiments, {sum(len(e['game_instances']) for e in exps)} episodes")
     return 0
 
 

@@ -6,8 +6,12 @@ as Markdown and CSV:
                               (the paper's Table 3; test-split experiments without ablation)
   ablations.md / ablations.csv  the val-split ablations (in-context examples, removed prompt sections)
   errors.md / errors.csv      episodes per error category, per model and experiment
+  repair.md / repair.csv      feedback experiments (experiment field `attempts` N > 1), per model
+                              and experiment: ES@1, ES@N, the share of first-attempt failures
+                              repaired, mean attempts used (only when there are such episodes)
 Numbers are percentages over all episodes of a cell; an aborted episode (no code found) counts
-as 0 for EM, CB and ES, and is listed as parse_error in the error tables.
+as 0 for EM, CB and ES, and is listed as parse_error in the error tables. Feedback experiments
+are kept out of table3 and the ablations (they are not the paper's protocol).
 """
 from __future__ import annotations
 
@@ -68,6 +72,7 @@ def collect(results: Path, games: list[str] | None = None) -> list[dict]:
         if games and game not in games:
             continue
         scores = _load(path).get("episode scores", {})
+        attempts = exp.get("attempts") or 1 + (exp.get("repair_attempts") or 0)
         episodes.append({
             "game": game, "model": exp_dir.parent.parent.name, "experiment": exp["name"],
             "board_type": exp["board_type"], "object_type": exp["object_type"], "task": exp["task"],
@@ -76,6 +81,9 @@ def collect(results: Path, games: list[str] | None = None) -> list[dict]:
             "em": _num(scores.get("Exact Match")), "cb": _num(scores.get("CodeBLEU")),
             "es": _num(scores.get("Execution Success")), "f1": _num(scores.get("Cell F1")),
             "category": scores.get("Error Category") or ("parse_error" if scores.get("Aborted") else "unknown"),
+            "max_attempts": int(attempts), "feedback_of": exp.get("feedback_of", ""),
+            "es1": _num(scores.get("ES@1", scores.get("Execution Success"))),
+            "attempts_used": _num(scores.get("Attempts")),
         })
     if not episodes:
         raise UserError(f"{results}: no scored SARTCo episodes (run `clem score -r {results}` first)")
@@ -103,7 +111,7 @@ def table3(episodes: list[dict]) -> tuple[list[str], list[dict]]:
     """Long rows (one per cell and model) of the paper's Table 3."""
     groups: dict[tuple, list] = defaultdict(list)
     for e in episodes:
-        if e["ablation"]:
+        if e["ablation"] or e["max_attempts"] > 1:
             continue
         groups[(e["game"], e["board_type"], e["object_type"], e["task"], e["source"], e["split"], e["model"])].append(e)
     rows = []
@@ -118,7 +126,7 @@ def table3(episodes: list[dict]) -> tuple[list[str], list[dict]]:
 def ablations(episodes: list[dict]) -> tuple[list[str], list[dict]]:
     groups: dict[tuple, list] = defaultdict(list)
     for e in episodes:
-        if not e["ablation"]:
+        if not e["ablation"] or e["max_attempts"] > 1:
             continue
         ab = e["ablation"]
         groups[(e["game"], e["board_type"], e["object_type"], e["task"], e["source"], ab.get("kind", ""),
@@ -147,6 +155,33 @@ def errors(episodes: list[dict]) -> tuple[list[str], list[dict]]:
         rows.append({"model": model, "game": game, "experiment": experiment,
                      "episodes": sum(counter.values()), **{c: counter.get(c, 0) for c in categories}})
     return ["model", "game", "experiment", "episodes", *categories], rows
+
+
+def repair(episodes: list[dict]) -> tuple[list[str], list[dict]]:
+    """Feedback experiments, per model and experiment: ES@1 and ES@N (% of episodes; aborted
+    = 0), first-attempt failures, how many of them were repaired and their share (%), mean
+    attempts used."""
+    groups: dict[tuple, list] = defaultdict(list)
+    for e in episodes:
+        if e["max_attempts"] > 1:
+            groups[(e["model"], e["game"], e["experiment"])].append(e)
+    natural = lambda key: [int(t) if t.isdigit() else t for t in re.split(r"(\d+)", "/".join(key))]  # noqa: E731
+    rows = []
+    for key in sorted(groups, key=natural):
+        model, game, experiment = key
+        group = groups[key]
+        first = sum(1 for e in group if e["es1"])
+        last = sum(1 for e in group if e["es"])
+        failures = len(group) - first
+        used = [e["attempts_used"] for e in group if e["attempts_used"] is not None]
+        rows.append({"model": model, "game": game, "experiment": experiment, "feedback_of": group[0]["feedback_of"],
+                     "attempts": group[0]["max_attempts"], "episodes": len(group),
+                     "es_at_1": _pct([e["es1"] for e in group]), "es_at_n": _pct([e["es"] for e in group]),
+                     "first_failures": failures, "repaired": last - first,
+                     "repaired_share": round(100.0 * (last - first) / failures, 2) if failures else float("nan"),
+                     "mean_attempts": round(sum(used) / len(used), 2) if used else float("nan")})
+    return ["model", "game", "experiment", "feedback_of", "attempts", "episodes", "es_at_1", "es_at_n",
+            "first_failures", "repaired", "repaired_share", "mean_attempts"], rows
 
 
 def _write_csv(path: Path, header: list[str], rows: list[dict]) -> None:
@@ -192,6 +227,8 @@ def run(args: argparse.Namespace) -> int:
     header, rows = table3(episodes)
     _write_csv(out / "table3.csv", header, rows)
     md = "# SARTCo results (paper Table 3 layout)\n\n"
+    if not rows:
+        md += "No episodes of the paper's protocol (only feedback experiments: see repair.md).\n"
     for game in sorted({r["game"] for r in rows}):
         md += table3_markdown([r for r in rows if r["game"] == game], f"{game}",
                               ["board_type", "object_type", "task", "source"]) + "\n"
@@ -206,6 +243,17 @@ def run(args: argparse.Namespace) -> int:
                                   ["board_type", "object_type", "task", "source", "ablation", "value"]) + "\n"
         (out / "ablations.md").write_text(md, encoding="utf-8")
         written += ["ablations.md", "ablations.csv"]
+    header, rows = repair(episodes)
+    if rows:
+        _write_csv(out / "repair.csv", header, rows)
+        md = ("# Repair after execution feedback (feedback experiments)\n\n"
+              "ES@1 / ES@N = execution success (%) after the first / the last attempt (aborted = 0); "
+              "repaired share = (successes at N - successes at 1) / first-attempt failures (%; "
+              "nan when nothing failed); mean attempts = attempts used per episode.\n\n")
+        md += _md(["model", "game", "experiment", "of", "N", "episodes", "ES@1", "ES@N", "failed@1", "repaired",
+                   "repaired share", "mean attempts"], [[r[h] for h in header] for r in rows])
+        (out / "repair.md").write_text(md, encoding="utf-8")
+        written += ["repair.md", "repair.csv"]
     header, rows = errors(episodes)
     _write_csv(out / "errors.csv", header, rows)
     md = "# Error categories (episodes per category)\n\n" + _md(header, [[r[h] for h in header] for r in rows])
