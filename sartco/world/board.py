@@ -5,6 +5,8 @@ from .components import DEFAULT_COLS, DEFAULT_ROWS
 from .errors import ErrorCode, WorldError
 
 Cells = dict[str, list[list[str]]]
+MAX_SIDE = 64
+_KEYS = tuple(tuple(f"{r}:{c}" for c in range(MAX_SIDE)) for r in range(MAX_SIDE))  # "row:col", made once
 
 
 class Board:
@@ -13,11 +15,8 @@ class Board:
     __slots__ = ("rows", "cols", "stacks", "puts")
 
     def __init__(self, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS):
-        for name, value in (("rows", rows), ("cols", cols)):
-            if type(value) is not int:
-                raise WorldError(ErrorCode.TYPE_ERROR, f"init_board: {name} must be an integer, got {type(value).__name__}")
-            if not 1 <= value <= 64:
-                raise WorldError(ErrorCode.DIMENSIONS_MISMATCH, f"init_board: {name}={value} is outside 1..64")
+        if not (type(rows) is int and type(cols) is int and 1 <= rows <= MAX_SIDE and 1 <= cols <= MAX_SIDE):
+            _bad_size(rows, cols)
         self.rows = rows
         self.cols = cols
         self.stacks: list[list[list[tuple[str, str]]]] = [[[] for _ in range(cols)] for _ in range(rows)]
@@ -29,9 +28,9 @@ class Board:
     def cells(self) -> Cells:
         """The canonical form, keys in row-major order, empty cells left out."""
         return {
-            f"{r}:{c}": [list(piece) for piece in stack]
-            for r, row in enumerate(self.stacks)
-            for c, stack in enumerate(row)
+            key: [list(piece) for piece in stack]
+            for keys, row in zip(_KEYS, self.stacks)
+            for key, stack in zip(keys, row)
             if stack
         }
 
@@ -42,6 +41,14 @@ class Board:
             r, c = parse_key(key)
             board.stacks[r][c] = [(shape, color) for shape, color in stack]
         return board
+
+
+def _bad_size(rows, cols):
+    for name, value in (("rows", rows), ("cols", cols)):
+        if type(value) is not int:
+            raise WorldError(ErrorCode.TYPE_ERROR, f"init_board: {name} must be an integer, got {type(value).__name__}")
+        if not 1 <= value <= MAX_SIDE:
+            raise WorldError(ErrorCode.DIMENSIONS_MISMATCH, f"init_board: {name}={value} is outside 1..{MAX_SIDE}")
 
 
 def parse_key(key: str) -> tuple[int, int]:
