@@ -51,7 +51,8 @@ class BuildRecord:
         return family(self.category)
 
     def summary(self) -> str:
-        """One line for transcripts: what happened and where."""
+        """One line for transcripts: what happened and where. Derived from the target too (cells
+        that differ, P/R/F1): never send it to a player - sartco.clem.feedback is what a builder sees."""
         if self.category == SUCCESS_CATEGORY:
             return f"success: the target was built ({self.puts} puts)"
         if self.error == ErrorCode.PARSE_ERROR:

@@ -208,6 +208,22 @@ def test_target_never_reaches_the_builder(play_episodes):
         assert "('screw', 'green')" not in text and "cells differ" not in text and "P/R/F1" not in text
 
 
+def test_report_repair_table(play_episodes, tmp_path):
+    from argparse import Namespace
+
+    from sartco.scores import report
+    play_episodes([instance(0), instance(1, [fence(WRONG), fence("\n".join(GOLD))]), instance(2, [fence(PARTIAL)]),
+                   instance(3, [NO_CODE])], EXPERIMENT)
+    assert report.run(Namespace(results=tmp_path / "results", out=tmp_path / "scores", game=None)) == 0
+    [row] = list(csv.DictReader((tmp_path / "scores" / "repair.csv").open()))
+    assert (row["experiment"], row["episodes"], row["es_at_1"], row["es_at_n"], row["first_failures"],
+            row["repaired"], row["repaired_share"], row["mean_attempts"]) == \
+        ("scripted_feedback", "4", "25.0", "50.0", "3", "1", "33.33", "2.25")
+    assert "| mock | cobot_instruct | scripted_feedback | scripted | 3 | 4 | 25.00 | 50.00 | 3 | 1 | 33.33 | 2.25 |" \
+        in (tmp_path / "scores" / "repair.md").read_text()
+    assert not list(csv.DictReader((tmp_path / "scores" / "table3.csv").open()))
+
+
 # --- clem run / score / transcribe / eval and sartco report -----------------------------------
 
 def sh(*args):
