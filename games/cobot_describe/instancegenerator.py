@@ -26,7 +26,7 @@ from pathlib import Path
 from clemcore.clemgame import GameInstanceGenerator
 
 from sartco.clem.describer import INSTRUCTION_SLOT
-from sartco.clem.episodes import board_fields
+from sartco.clem.episodes import DESCRIBED_TASK, board_fields
 from sartco.instances.examples import select_examples
 from sartco.instances.prompts import builder_prompt, describer_prompt, instruction_text
 
@@ -35,9 +35,9 @@ REPO = GAME_DIR.parents[1]
 
 # experiment name -> (board_type, object_type, dataset file stem, builder task)
 EXPERIMENTS = {
-    "simple_boards": ("simple", "simple", "simple_simple", "optimal_function"),
-    "regular_boards_simple_objects": ("regular", "simple", "regular_simple", "repetition"),
-    "regular_boards_complex_objects": ("regular", "complex", "regular_complex", "repetition"),
+    "simple_boards": ("simple", "simple", "simple_simple", DESCRIBED_TASK["simple"]),
+    "regular_boards_simple_objects": ("regular", "simple", "regular_simple", DESCRIBED_TASK["regular"]),
+    "regular_boards_complex_objects": ("regular", "complex", "regular_complex", DESCRIBED_TASK["regular"]),
 }
 TEMPLATE_STYLE = {"optimal_function": "single_turn", "repetition": "regular"}
 

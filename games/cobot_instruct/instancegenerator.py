@@ -38,7 +38,7 @@ from pathlib import Path
 
 from clemcore.clemgame import GameInstanceGenerator
 
-from sartco.clem.episodes import board_fields
+from sartco.clem.episodes import DESCRIBED_TASK, board_fields
 from sartco.instances.examples import MAX_EXAMPLES, select_examples
 from sartco.instances.prompts import SECTIONS, builder_prompt, builder_turn, gold_code, instruction_text
 
@@ -128,12 +128,16 @@ class CobotInstructInstanceGenerator(GameInstanceGenerator):
             inst.update(episode(record, task, source, examples, sections))
 
     def on_generate(self, seed: int, dataset_dir: Path, published_dir: Path | None = None,
-                    n_examples: int = N_EXAMPLES, ablation_episodes: int = ABLATION_EPISODES):
+                    n_examples: int = N_EXAMPLES, ablation_episodes: int = ABLATION_EPISODES,
+                    describers_dir: Path | None = None):
         manifest, files = load_dataset(dataset_dir)
         info = {"version": manifest["version"], "source": manifest["source"], "seed": manifest.get("seed"),
                 "path": os.path.relpath(dataset_dir, REPO), "generator_seed": seed, "n_examples": n_examples}
         self.instances["dataset"] = info
         pools = {board: records(files, board, "train") for board in BOARDS}
+        if describers_dir is not None:
+            self.add_described(describers_dir, info, pools, seed, n_examples)
+            return
         if published_dir is None:
             for board, task, sources, _ in CELLS:
                 for source in sources:
@@ -164,6 +168,26 @@ class CobotInstructInstanceGenerator(GameInstanceGenerator):
                 exp = self.experiment(f"{board}_{task}_{source}", board, task, source, "test", pub_info)
                 self.add_episodes(exp, items, task, source, pools[board], seed, n_examples)
 
+    def add_described(self, describers_dir: Path, info: dict, pools: dict, seed: int, n_examples: int):
+        """Experiments from a `sartco import-instructions` dataset: one per describer model (an
+        instruction source of its manifest) and board kind, named <board>_<task>_<model>, with the
+        builder task cobot_describe gives its builder (DESCRIBED_TASK)."""
+        manifest, files = load_dataset(describers_dir)
+        if manifest.get("source") != "describer":
+            raise UserError(f"{describers_dir}: not a describer dataset (manifest source {manifest.get('source')!r})")
+        d_info = {"version": manifest["version"], "source": manifest["source"], "seed": manifest.get("seed"),
+                  "path": os.path.relpath(describers_dir, REPO), "examples_from": info, "generator_seed": seed,
+                  "n_examples": n_examples}
+        self.instances["dataset"] = d_info
+        for source in manifest["config"]["instruction_sources"]:
+            for board, (board_type, _) in BOARDS.items():
+                task = DESCRIBED_TASK[board_type]
+                items = [r for r in records(files, board, "test") if source in r["instructions"]]
+                if items:
+                    exp = self.experiment(f"{board}_{task}_{source}".replace("/", "_"), board, task, source,
+                                          "test", d_info)
+                    self.add_episodes(exp, items, task, source, pools[board], seed, n_examples)
+
 
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -171,6 +195,8 @@ def main(argv=None) -> int:
     parser.add_argument("--published", type=Path, default=None,
                         help="imported published dataset folder: write in/instances_published.json "
                              "and in/instances_published_feedback.json instead")
+    parser.add_argument("--describers", type=Path, default=None,
+                        help="dataset from `sartco import-instructions`: write in/instances_describers.json instead")
     parser.add_argument("--seed", type=int, default=42, help="seed of the in-context example choice")
     parser.add_argument("--examples", type=int, default=N_EXAMPLES, help="in-context examples (Table 3 cells)")
     parser.add_argument("--ablation-episodes", type=int, default=ABLATION_EPISODES)
@@ -181,12 +207,16 @@ def main(argv=None) -> int:
         print(f"instancegenerator: --attempts must be at least 2, not {args.attempts}", file=sys.stderr)
         return 2
     stem = "instances" if args.published is None else "instances_published"
-    for name, attempts in ((f"{stem}.json", None), (f"{stem}{FEEDBACK_SUFFIX}.json", args.attempts)):
+    outputs = ((f"{stem}.json", None), (f"{stem}{FEEDBACK_SUFFIX}.json", args.attempts))
+    if args.describers is not None:
+        outputs = (("instances_describers.json", None),)
+    for name, attempts in outputs:
         try:
             gen = CobotInstructInstanceGenerator(feedback_attempts=attempts)
             path = gen.generate(name, seed=args.seed, dataset_dir=args.dataset.resolve(),
                                 published_dir=args.published.resolve() if args.published else None,
-                                n_examples=args.examples, ablation_episodes=args.ablation_episodes)
+                                n_examples=args.examples, ablation_episodes=args.ablation_episodes,
+                                describers_dir=args.describers.resolve() if args.describers else None)
         except (UserError, KeyError, ValueError) as exc:
             print(f"instancegenerator: {exc}", file=sys.stderr)
             return 2

@@ -11,6 +11,10 @@ from __future__ import annotations
 
 from sartco.instances.prompts import gold_code
 
+# the builder's task when a describer wrote the instruction (cobot_describe, and the cobot_instruct
+# experiments made from describers' instructions): the paper's model-written-instruction tasks
+DESCRIBED_TASK = {"simple": "optimal_function", "regular": "repetition"}
+
 
 def board_fields(record: dict, task: str) -> dict:
     return {

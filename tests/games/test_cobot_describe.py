@@ -141,12 +141,15 @@ def test_round_trip_into_cobot_instruct(describe_run, tmp_path, play_episodes):
     assert manifest["config"]["instruction_sources"] == {"mock": 6} and manifest["defects"] == []
     assert manifest["files"] == {"simple_simple_test.json": 2, "regular_simple_test.json": 2,
                                  "regular_complex_test.json": 2}
-    instances = []
-    make_episode = cobot_instruct_generator().episode  # cobot_instruct's own instance format
-    for name in manifest["files"]:
-        for record in json.loads((out / name).read_text()):
-            task = "repetition" if record["board_type"] == "regular" else "optimal_function"
-            instances.append({"game_id": len(instances), **make_episode(record, task, "mock", [])})
+    module = cobot_instruct_generator()  # cobot_instruct's own generator, its --describers path
+    generator = module.CobotInstructInstanceGenerator()
+    generator.on_generate(seed=42, dataset_dir=REPO / "instances" / "v1", describers_dir=out)
+    experiments = generator.instances["experiments"]
+    assert [e["name"] for e in experiments] == ["sb_so_optimal_function_mock", "rb_so_repetition_mock",
+                                                "rb_co_repetition_mock"]
+    assert generator.instances["dataset"]["source"] == "describer"
+    instances = [{**inst, "game_id": i} for e in experiments for i, inst in enumerate(e["game_instances"])]
+    assert len(instances) == 6 and all(inst["source"] == "mock" for inst in instances)
     experiment = {"name": "describer_mock_instructions", "task": "mixed", "source": "mock", "split": "test"}
     for model in ("mock", "rulebased"):
         results = play_episodes(instances, experiment, model=model)
