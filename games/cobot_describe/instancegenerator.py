@@ -71,8 +71,8 @@ class CobotDescribeInstanceGenerator(GameInstanceGenerator):
         game_id = 0
         for name, (board_type, object_type, stem, task) in EXPERIMENTS.items():
             experiment = self.add_experiment(name)
-            experiment.update(board_type=board_type, object_type=object_type, task=task, split="test",
-                              dataset=manifest["version"], dataset_seed=manifest["seed"],
+            experiment.update(board_type=board_type, object_type=object_type, task=task, source="describer",
+                              split="test", dataset=manifest["version"], dataset_seed=manifest["seed"],
                               examples=examples, example_seed=seed)
             pool = load_split(dataset, stem, "train")
             for record in spread(load_split(dataset, stem, "test"), per_experiment):
