@@ -3,7 +3,7 @@
 # transcribed, evaluated and reported; ends by printing the results table.
 #   cobot_instruct  mock (gold code) on the template cells of Table 3 (generated dataset v1) and
 #                   on the human- and model-written cells (imported published data), plus the
-#                   val-split ablations that ship in in/instances.json
+#                   val-split ablations that ship in in/instances.json; the feedback experiments
 #   cobot_describe  mock describer (template instructions) + mock builder (the rule-based follower)
 # Settings (environment): RESULTS (results), MODEL (mock), SCORES (scores).
 set -euo pipefail
@@ -24,6 +24,8 @@ step "cobot_instruct: template cells and ablations (in/instances.json)"
 clem run -g cobot_instruct -m "$MODEL" -r "$RESULTS"
 step "cobot_instruct: human- and model-written cells (in/instances_published.json)"
 clem run -g cobot_instruct -m "$MODEL" -i instances_published -r "$RESULTS"
+step "cobot_instruct: execution feedback and repair, beyond the paper (in/instances_feedback.json)"
+clem run -g cobot_instruct -m "$MODEL" -i instances_feedback -r "$RESULTS"
 step "cobot_describe"
 clem run -g cobot_describe -m "$MODEL" -r "$RESULTS"
 
@@ -35,3 +37,5 @@ sartco report -r "$RESULTS" --out "$SCORES"
 
 step "results ($RESULTS/, tables in $SCORES/)"
 cat "$SCORES/table3.md"
+echo
+cat "$SCORES/repair.md"

@@ -1,5 +1,4 @@
-"""Scores: exact match, CodeBLEU, the per-episode score record (and the report tables)."""
-from .episode import EpisodeScore
+"""Scores: exact match and CodeBLEU (the per-episode record is sartco.clem.building.BuildRecord, turned into numbers by sartco.clem.scoring.BuildScorer; tables by sartco.scores.report)."""
 from .metrics import CodeBleu, code_bleu, code_bleu_detail, exact_match, normalize_code
 
-__all__ = ["CodeBleu", "EpisodeScore", "code_bleu", "code_bleu_detail", "exact_match", "normalize_code"]
+__all__ = ["CodeBleu", "code_bleu", "code_bleu_detail", "exact_match", "normalize_code"]
