@@ -61,8 +61,9 @@ def check(board: Board, shape, color, x, y) -> list[tuple[int, int]]:
     return cells
 
 
-_SHAPES = frozenset(SHAPES)
-_COLORS = frozenset(COLORS)
+# the pieces of the fast path, made once: {shape: {colour: (shape, colour)}} (tuples are immutable)
+_PIECES = {shape: {color: (shape, color) for color in COLORS} for shape in SHAPES}
+_NO_COLORS: dict = {}
 
 
 def put(board: Board, shape, color, x, y) -> Board:
@@ -75,7 +76,8 @@ def put(board: Board, shape, color, x, y) -> Board:
     if type(board) is not Board and not isinstance(board, Board):
         _fail(E.TYPE_ERROR, f"put: the first argument must be a board, got {type(board).__name__}")
     if (type(x) is int and type(y) is int and type(shape) is str and type(color) is str
-            and shape in _SHAPES and color in _COLORS and 0 <= x < board.rows and 0 <= y < board.cols):
+            and 0 <= x < board.rows and 0 <= y < board.cols
+            and (piece := _PIECES.get(shape, _NO_COLORS).get(color)) is not None):
         stacks = board.stacks
         anchor = stacks[x][y]
         n = len(anchor)
@@ -83,7 +85,7 @@ def put(board: Board, shape, color, x, y) -> Board:
         if offset is None:
             if n == 0 or (n < MAX_DEPTH and anchor[-1][0] not in NOTHING_ON_TOP and not anchor[-1][0] == shape
                           and (n < 2 or not anchor[-2][0] == shape)):
-                anchor.append((shape, color))
+                anchor.append(piece)
                 board.puts += 1
                 return board
         else:
@@ -93,14 +95,12 @@ def put(board: Board, shape, color, x, y) -> Board:
                 other = stacks[x2][y2]
                 if n == 0:
                     if not other:
-                        piece = (shape, color)
                         anchor.append(piece)
                         other.append(piece)
                         board.puts += 1
                         return board
                 elif (n == 1 and len(other) == 1 and anchor[-1][0] not in NOTHING_ON_TOP
                       and other[-1][0] not in NOTHING_ON_TOP and not anchor[-1][0] == shape):
-                    piece = (shape, color)
                     anchor.append(piece)
                     other.append(piece)
                     board.puts += 1
