@@ -10,7 +10,10 @@ from __future__ import annotations
 
 import json
 import os
+import queue
 import select
+import threading
+from collections import deque
 
 from sartco.cli import UserError
 from sartco.world import ErrorCode
@@ -20,6 +23,7 @@ from .pool import dispatch
 from .records import Execution, Limits
 
 CHUNK = 1 << 16
+IN_FLIGHT = 2  # batches being run at once (the next one queues on each worker's lock)
 
 
 def configure(parser) -> None:
@@ -95,6 +99,25 @@ def _code_key(raw: bytes) -> bytes:
     return raw[start:end]
 
 
+def _answers(lines, rows, cols, limits, workers, cache) -> bytes:
+    """The output text of one batch (every line answered, whatever happens)."""
+    keys = [_code_key(raw) for _, raw in lines] if cache else range(len(lines))
+    items = [b"%d %s" % (number, raw) for number, raw in lines]
+    try:
+        answers = dispatch("line", items, keys, rows, cols, limits, workers, cache)
+    except Exception as exc:  # noqa: BLE001 - every line gets an answer, whatever happens
+        answers = [Execution(False, ErrorCode.RUNTIME_ERROR, f"sandbox failure: {exc}", {}, 0)] * len(items)
+    text = []
+    for (number, raw), ans in zip(lines, answers):
+        if type(ans) is bytes:
+            text.append(ans)
+        else:  # timeout or dead worker: answer here
+            ident, code, target, problem = parse_line(number, raw)
+            row = malformed(ident, problem) if problem else answer(ident, ans.ok, ans.error, ans.message, ans.cells, target)
+            text.append(json.dumps(row).encode())
+    return b"\n".join(text) + b"\n"
+
+
 def serve(inp, out, rows: int = 8, cols: int = 8, limits: Limits | None = None, *,
           workers: int | None = None, batch: int = 1024, cache: bool = True) -> int:
     """The JSON-lines loop over binary streams; returns the number of lines answered.
@@ -102,25 +125,63 @@ def serve(inp, out, rows: int = 8, cols: int = 8, limits: Limits | None = None, 
     The workers parse, run, compare and format each line (lines.py); the parent finds each
     line's "code" text (with the cache on) only to send repeats of a source to the same worker
     (with the cache off, lines alternate between the workers), and formats the answer
-    itself only for a line whose worker timed out or died."""
+    itself only for a line whose worker timed out or died.
+
+    Pipelined: a reader thread collects the next batch while the current one runs, and up to
+    two batches are in flight, so a worker that finishes its share of one batch goes on with
+    its share of the next (each worker's lock keeps them in order) instead of waiting for the
+    other worker and for the parent. Answers are written strictly in input order, each batch
+    as soon as it is complete, and no batch waits for input that has not arrived (an
+    interactive caller gets each answer without sending more)."""
     limits = limits or Limits()
-    answered = 0
-    for lines in _batches(inp, batch):
-        keys = [_code_key(raw) for _, raw in lines] if cache else range(len(lines))
-        items = [b"%d %s" % (number, raw) for number, raw in lines]
+    events: queue.SimpleQueue = queue.SimpleQueue()  # ("batch", lines) | ("done", (slot, (text, n))) | ("end", exc)
+    room = threading.Semaphore(IN_FLIGHT + 1)  # batches read but not yet written
+
+    def read():
         try:
-            answers = dispatch("line", items, keys, rows, cols, limits, workers, cache)
-        except Exception as exc:  # noqa: BLE001 - every line gets an answer, whatever happens
-            answers = [Execution(False, ErrorCode.RUNTIME_ERROR, f"sandbox failure: {exc}", {}, 0)] * len(items)
-        text = []
-        for (number, raw), ans in zip(lines, answers):
-            if type(ans) is bytes:
-                text.append(ans)
-            else:  # timeout or dead worker: answer here
-                ident, code, target, problem = parse_line(number, raw)
-                row = malformed(ident, problem) if problem else answer(ident, ans.ok, ans.error, ans.message, ans.cells, target)
-                text.append(json.dumps(row).encode())
-        out.write(b"\n".join(text) + b"\n")
-        out.flush()
-        answered += len(text)
+            for lines in _batches(inp, batch):
+                room.acquire()
+                events.put(("batch", lines))
+            events.put(("end", None))
+        except BaseException as exc:  # noqa: BLE001 - handed to the main thread
+            events.put(("end", exc))
+
+    def work(slot, lines):
+        try:
+            events.put(("done", (slot, (_answers(lines, rows, cols, limits, workers, cache), len(lines)))))
+        except BaseException as exc:  # noqa: BLE001 - cannot happen (_answers catches); never hang
+            events.put(("done", (slot, exc)))
+
+    threading.Thread(target=read, daemon=True).start()
+    backlog: deque = deque()  # (slot, lines) read, not yet started
+    results: dict = {}  # slot -> output text, done but not yet written
+    started = written = answered = 0
+    running = 0
+    ended, failure = False, None
+    while not (ended and written == started and not backlog):
+        kind, value = events.get()
+        if kind == "batch":
+            backlog.append((started, value))
+            started += 1
+        elif kind == "end":
+            ended, failure = True, value
+        else:
+            slot, done = value
+            running -= 1
+            if isinstance(done, BaseException):
+                raise done
+            results[slot] = done
+            while written in results:
+                text, n = results.pop(written)
+                out.write(text)
+                out.flush()
+                answered += n
+                written += 1
+                room.release()
+        while backlog and running < IN_FLIGHT:
+            slot, lines = backlog.popleft()
+            running += 1
+            threading.Thread(target=work, args=(slot, lines), daemon=True).start()
+    if failure is not None:
+        raise failure
     return answered
