@@ -61,50 +61,10 @@ def check(board: Board, shape, color, x, y) -> list[tuple[int, int]]:
     return cells
 
 
-# the pieces of the fast path, made once: {shape: {colour: (shape, colour)}} (tuples are immutable)
-_PIECES = {shape: {color: (shape, color) for color in COLORS} for shape in SHAPES}
-_NO_COLORS: dict = {}
-
-
 def put(board: Board, shape, color, x, y) -> Board:
-    """Place one piece, or raise WorldError and leave the board unchanged.
-
-    The common case (int coordinates, a known shape and colour as plain str, a placement that
-    breaks no rule) is decided here in a few comparisons; anything else goes through check(),
-    which raises the first violated rule in the documented order. The fast path accepts only
-    what check() accepts, and places the piece exactly as below."""
-    if type(board) is not Board and not isinstance(board, Board):
+    """Place one piece, or raise WorldError and leave the board unchanged."""
+    if not isinstance(board, Board):
         _fail(E.TYPE_ERROR, f"put: the first argument must be a board, got {type(board).__name__}")
-    if (type(x) is int and type(y) is int and type(shape) is str and type(color) is str
-            and 0 <= x < board.rows and 0 <= y < board.cols
-            and (piece := _PIECES.get(shape, _NO_COLORS).get(color)) is not None):
-        stacks = board.stacks
-        anchor = stacks[x][y]
-        n = len(anchor)
-        offset = BRIDGES.get(shape)
-        if offset is None:
-            if n == 0 or (n < MAX_DEPTH and anchor[-1][0] not in NOTHING_ON_TOP and not anchor[-1][0] == shape
-                          and (n < 2 or not anchor[-2][0] == shape)):
-                anchor.append(piece)
-                board.puts += 1
-                return board
-        else:
-            x2 = x + offset[0]
-            y2 = y + offset[1]
-            if x2 < board.rows and y2 < board.cols:
-                other = stacks[x2][y2]
-                if n == 0:
-                    if not other:
-                        anchor.append(piece)
-                        other.append(piece)
-                        board.puts += 1
-                        return board
-                elif (n == 1 and len(other) == 1 and anchor[-1][0] not in NOTHING_ON_TOP
-                      and other[-1][0] not in NOTHING_ON_TOP and not anchor[-1][0] == shape):
-                    anchor.append(piece)
-                    other.append(piece)
-                    board.puts += 1
-                    return board
     piece = (shape, color)
     for cx, cy in check(board, shape, color, x, y):
         board.stacks[cx][cy].append(piece)
