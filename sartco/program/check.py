@@ -302,6 +302,23 @@ def instrument(tree: ast.Module) -> ast.Module:
     seen_loads: set[str] = set()  # names already checked in a load context
     offences: list[Forbidden] = []
     plan_of, wrap_of, name_type, const_type, load_type = PLAN.get, WRAP_ANY.get, ast.Name, ast.Constant, ast.Load
+
+    def enter(child):
+        """Check one child node; return what to visit next (the child, or its wrapped form when a
+        growth check applies), or None for a constant or a name (checked here, nothing below)."""
+        ct = type(child)
+        if ct is const_type or child is None:
+            return None
+        if ct is name_type:
+            if type(child.ctx) is not load_type:
+                _name(child, child.id, True)
+            elif child.id not in seen_loads:
+                _name(child, child.id, False)
+                seen_loads.add(child.id)
+            return None
+        wrap = wrap_of(ct)
+        return child if wrap is None else wrap(child, wrapped)
+
     while todo:
         node = pop()
         try:
@@ -314,47 +331,19 @@ def instrument(tree: ast.Module) -> ast.Module:
                 rule(node)
             for field in singles:
                 child = getattr(node, field)
-                if child is None:
-                    continue
-                ct = type(child)
-                if ct is const_type:
-                    continue
-                if ct is name_type:
-                    if type(child.ctx) is load_type:
-                        if child.id not in seen_loads:
-                            _name(child, child.id, False)
-                            seen_loads.add(child.id)
-                    else:
-                        _name(child, child.id, True)
-                    continue
-                wrap = wrap_of(ct)
-                if wrap is not None:
-                    new = wrap(child, wrapped)
+                new = enter(child)
+                if new is not None:
                     if new is not child:
                         setattr(node, field, new)
-                        child = new
-                push(child)
+                    push(new)
             for field in lists:
                 value = getattr(node, field)
                 for i, child in enumerate(value):
-                    ct = type(child)
-                    if ct is const_type or child is None:
-                        continue
-                    if ct is name_type:
-                        if type(child.ctx) is load_type:
-                            if child.id not in seen_loads:
-                                _name(child, child.id, False)
-                                seen_loads.add(child.id)
-                        else:
-                            _name(child, child.id, True)
-                        continue
-                    wrap = wrap_of(ct)
-                    if wrap is not None:
-                        new = wrap(child, wrapped)
+                    new = enter(child)
+                    if new is not None:
                         if new is not child:
                             value[i] = new
-                            child = new
-                    push(child)
+                        push(new)
         except Forbidden as exc:
             offences.append(exc)
     if offences:
