@@ -14,28 +14,35 @@ SCORES="${SCORES:-scores}"
 SHARED="../shared/sartco-data/published"
 test -d "$SHARED" || { echo "make main needs the published SARTCo data at $SHARED" >&2; exit 2; }
 
-step() { printf '\n== %s\n' "$*"; }
+mkdir -p "$RESULTS"
+LOG="$RESULTS/main.log"   # clemcore's progress bars and logs go here; the terminal gets the steps
+: > "$LOG"
+step() { printf '== %s\n' "$*"; }
+run() {
+  "$@" >> "$LOG" 2>&1 || { tail -25 "$LOG"; echo "make main: failed: $*  (full log: $LOG)" >&2; exit 1; }
+}
 
 step "importing the published SARTCo data (derived from ../shared, not committed)"
-sartco import "$SHARED" --out instances/published --quiet
-python games/cobot_instruct/instancegenerator.py --published instances/published
+run sartco import "$SHARED" --out instances/published --quiet
+run python games/cobot_instruct/instancegenerator.py --published instances/published
 
 step "cobot_instruct: template cells and ablations (in/instances.json)"
-clem run -g cobot_instruct -m "$MODEL" -r "$RESULTS"
+run clem run -g cobot_instruct -m "$MODEL" -r "$RESULTS"
 step "cobot_instruct: human- and model-written cells (in/instances_published.json)"
-clem run -g cobot_instruct -m "$MODEL" -i instances_published -r "$RESULTS"
+run clem run -g cobot_instruct -m "$MODEL" -i instances_published -r "$RESULTS"
 step "cobot_instruct: execution feedback and repair, beyond the paper (in/instances_feedback.json)"
-clem run -g cobot_instruct -m "$MODEL" -i instances_feedback -r "$RESULTS"
+run clem run -g cobot_instruct -m "$MODEL" -i instances_feedback -r "$RESULTS"
 step "cobot_describe"
-clem run -g cobot_describe -m "$MODEL" -r "$RESULTS"
+run clem run -g cobot_describe -m "$MODEL" -r "$RESULTS"
 
 step "scoring, transcribing, evaluating"
-clem score -r "$RESULTS"
-clem transcribe -r "$RESULTS"
-clem eval -r "$RESULTS"
-sartco report -r "$RESULTS" --out "$SCORES"
+run clem score -r "$RESULTS"
+run clem transcribe -r "$RESULTS"
+run clem eval -r "$RESULTS"
+run sartco report -r "$RESULTS" --out "$SCORES"
 
-step "results ($RESULTS/, tables in $SCORES/)"
+step "results: $RESULTS/ (transcripts, results.csv, main.log), tables in $SCORES/"
+echo
 cat "$SCORES/table3.md"
 echo
 cat "$SCORES/repair.md"
