@@ -17,9 +17,6 @@ from sartco.world import COLORS, Board, WorldError, put
 from .objects import ObjectSpec
 from .templates import render
 
-SIMPLE_OBJECTS = ("regular_seed12", "regular_seed13", "regular_seed14", "regular_seed15", "regular_seed16")
-COMPLEX_OBJECTS = ("regular_seed2", "regular_seed3", "regular_seed4", "regular_seed5")
-
 
 @dataclass(frozen=True, slots=True)
 class Arrangement:

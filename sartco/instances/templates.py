@@ -51,7 +51,3 @@ def environment(root: str | None = None) -> Environment:
 def render(template: str, /, **context) -> str:
     return environment().get_template(template).render(**context)
 
-
-def render_line(template: str, /, **context) -> str:
-    """A template that yields one piece of text: rendered, surrounding white space removed."""
-    return render(template, **context).strip()
