@@ -180,7 +180,7 @@ RULES = {
 
 # --- wraps: a child replaced by its instrumented form -----------------------------------------
 
-def _w_attribute(n):
+def _w_attribute(n, wrapped):
     if type(n.ctx) is not ast.Load:
         _fail(n, f"assigning to an attribute (.{n.attr}) is not allowed")
     if n.attr[0] == "_":
@@ -199,7 +199,7 @@ def _small_number(node) -> bool:
     return t is float or (t is int and -(1 << 64) < node.value < (1 << 64))
 
 
-def _w_binop(n):
+def _w_binop(n, wrapped):
     op = type(n.op)
     helper = CHECKED_OPS.get(op)
     if helper is None or (op is ast.Add and (_small_number(n.right) or _small_number(n.left))):
@@ -207,7 +207,7 @@ def _w_binop(n):
     return _call(helper, [n.left, n.right], n)
 
 
-def _w_augassign(n):
+def _w_augassign(n, wrapped):
     target, op = n.target, type(n.op)
     if type(target) is ast.Attribute:
         _fail(n, f"assigning to an attribute (.{target.attr}) is not allowed")
@@ -227,48 +227,25 @@ def _w_augassign(n):
     _fail(n, "augmented assignment to this target is not allowed")
 
 
+# a node wrapped in $len is visited again as the wrapper's argument: `wrapped` remembers it
 def _w_joined(n, wrapped):
+    if id(n) in wrapped:
+        return n
     wrapped.add(id(n))
     return _call("$len", [n], n)
 
 
 def _w_display(n, wrapped):
-    if type(n.ctx) is ast.Load and ast.Starred in map(type, n.elts):
-        wrapped.add(id(n))
-        return _call("$len", [n], n)
-    return n
-
-
-WRAPS = {A.Attribute: _w_attribute, A.BinOp: _w_binop, A.AugAssign: _w_augassign}
-WRAPS_ONCE = {A.JoinedStr: _w_joined, A.List: _w_display, A.Tuple: _w_display, A.Set: _w_display}
-
-
-def _w_attribute_(n, wrapped):
-    return _w_attribute(n)
-
-
-def _w_binop_(n, wrapped):
-    return _w_binop(n)
-
-
-def _w_augassign_(n, wrapped):
-    return _w_augassign(n)
-
-
-def _w_joined_(n, wrapped):
-    return n if id(n) in wrapped else _w_joined(n, wrapped)
-
-
-def _w_display_(n, wrapped):
     if type(n.ctx) is not ast.Load or ast.Starred not in map(type, n.elts) or id(n) in wrapped:
         return n
-    return _w_display(n, wrapped)
+    wrapped.add(id(n))
+    return _call("$len", [n], n)
 
 
-# every wrap, called as wrap(node, wrapped); the *_ONCE ones leave a node they wrapped alone
-WRAP_ANY = {
-    A.Attribute: _w_attribute_, A.BinOp: _w_binop_, A.AugAssign: _w_augassign_,
-    A.JoinedStr: _w_joined_, A.List: _w_display_, A.Tuple: _w_display_, A.Set: _w_display_,
+# every wrap, called as wrap(node, wrapped)
+WRAPS = {
+    A.Attribute: _w_attribute, A.BinOp: _w_binop, A.AugAssign: _w_augassign,
+    A.JoinedStr: _w_joined, A.List: _w_display, A.Tuple: _w_display, A.Set: _w_display,
 }
 
 
@@ -301,7 +278,7 @@ def instrument(tree: ast.Module) -> ast.Module:
     wrapped: set[int] = set()
     seen_loads: set[str] = set()  # names already checked in a load context
     offences: list[Forbidden] = []
-    plan_of, wrap_of, name_type, const_type, load_type = PLAN.get, WRAP_ANY.get, ast.Name, ast.Constant, ast.Load
+    plan_of, wrap_of, name_type, const_type, load_type = PLAN.get, WRAPS.get, ast.Name, ast.Constant, ast.Load
 
     def enter(child):
         """Check one child node; return what to visit next (the child, or its wrapped form when a
