@@ -31,7 +31,7 @@ import ast
 import builtins
 import re
 
-__all__ = ["ALLOWED_BUILTINS", "METHODS", "PROVIDED", "Forbidden", "prepare"]
+__all__ = ["ALLOWED_BUILTINS", "METHODS", "PROVIDED", "TYPE_METHODS", "Forbidden", "prepare"]
 
 ALLOWED_BUILTINS = frozenset(
     "range zip enumerate len min max abs sum sorted reversed any all round divmod "
@@ -40,9 +40,13 @@ ALLOWED_BUILTINS = frozenset(
 PROVIDED = frozenset({"put", "init_board"})  # `board` is provided too, but may be rebound
 PROTECTED = ALLOWED_BUILTINS | PROVIDED
 DENIED = frozenset(dir(builtins)) - ALLOWED_BUILTINS - {"True", "False", "None"}
-METHODS = frozenset(
-    "append extend insert pop index count get items keys values lower upper strip split".split()
-)
+TYPE_METHODS = {  # the methods a program may call, per type (checked again at run time)
+    list: frozenset({"append", "extend", "insert", "pop", "index", "count"}),
+    dict: frozenset({"get", "items", "keys", "values", "pop"}),
+    str: frozenset({"lower", "upper", "strip", "split", "index", "count"}),
+    tuple: frozenset({"index", "count"}),
+}
+METHODS = frozenset().union(*TYPE_METHODS.values())
 CHECKED_OPS = {ast.Add: "$add", ast.Mult: "$mul", ast.Pow: "$pow", ast.LShift: "$lshift", ast.Mod: "$mod"}
 INPLACE_OPS = {ast.Add: "$iadd", ast.Mult: "$imul", ast.Pow: "$ipow", ast.LShift: "$ilshift", ast.Mod: "$imod"}
 OP_SYMBOLS = {ast.Add: "+", ast.Mult: "*", ast.Pow: "**", ast.LShift: "<<", ast.Mod: "%"}
@@ -118,9 +122,7 @@ def _call(helper: str, args: list, old) -> ast.Call:
 
 
 def _tick(old) -> ast.Expr:
-    at = {"lineno": old.lineno, "col_offset": old.col_offset,
-          "end_lineno": old.end_lineno, "end_col_offset": old.end_col_offset}
-    return ast.Expr(ast.Call(ast.Name("$t", _LOAD, **at), [], [], **at), **at)
+    return _loc(ast.Expr(_call("$t", [], old)), old)
 
 
 # --- rules: checks (and in-place instrumentation) of a node itself ---------------------------

@@ -23,18 +23,12 @@ from operator import length_hint
 
 from sartco.world import Board, ErrorCode, WorldError, put
 
-from .check import Forbidden, prepare
+from .check import TYPE_METHODS, Forbidden, prepare
 
 E = ErrorCode
 INTS = (int, bool)
 SEQS = frozenset({list, tuple, str, bytes})
 SIZED = frozenset({list, tuple, str, bytes, dict, set, frozenset, range})
-TYPE_METHODS = {
-    list: frozenset({"append", "extend", "insert", "pop", "index", "count"}),
-    dict: frozenset({"get", "items", "keys", "values", "pop"}),
-    str: frozenset({"lower", "upper", "strip", "split", "index", "count"}),
-    tuple: frozenset({"index", "count"}),
-}
 MESSAGE_CHARS = 400
 CACHE_SIZE = 4096
 
