@@ -6,7 +6,7 @@ from collections import Counter
 
 import pytest
 
-from sartco.instances.check import check_records, executor
+from sartco.instances.check import check_records
 from sartco.instances.generate import write_dataset
 from sartco.instances.objects import enumerate_objects
 
@@ -90,11 +90,9 @@ def test_ids_and_record_form(dataset):
 
 def test_every_program_builds_its_board(dataset):
     _, files = dataset
-    name, run = executor()
-    print("executor:", name)
     problems = []
     for records in files.values():
-        problems += check_records(records, run)
+        problems += check_records(records)
     assert problems == []
 
 

@@ -8,9 +8,9 @@ import re
 import pytest
 
 from sartco.instances.arrangements import anchors
-from sartco.instances.check import _plain_execute
 from sartco.instances.objects import enumerate_objects
 from sartco.instances.records import regular_record, simple_record
+from sartco.program import execute
 
 PUBLISHED = __import__("pathlib").Path(__file__).resolve().parents[3] / "shared" / "sartco-data" / "published"
 
@@ -78,7 +78,7 @@ def test_regular_samples(v1_config, name):
         assert r["code"]["repetition"]["function"] == function
         assert (r["occupied_rows"], r["occupied_cols"]) == (s["occupied_rows"], s["occupied_cols"])
         assert norm(r["instructions"]["template"]["regular"]) == norm(s["dialogues"]["regular"]["instructions"][0]["<Programmer>"])
-        ok, _, cells = _plain_execute(s["code"]["total_code"])
-        assert ok and cells == r["target"]
+        ex = execute(s["code"]["total_code"])
+        assert ex.ok and ex.cells == r["target"]
         n += 1
     assert n == 130
