@@ -91,25 +91,29 @@ def _mod(a, b):
     return a % b
 
 
+def _grow(lst, items):
+    """lst.extend(items) within the length budget: checked before for sized items, after for
+    any other iterable."""
+    n = len(items) if type(items) in SIZED else 0
+    if len(lst) + n > LENGTH:
+        _too_long(len(lst) + n)
+    lst.extend(items)
+    if len(lst) > LENGTH:
+        _too_long(len(lst))
+
+
 def _iadd(a, b):
-    if type(a) is list:
-        n = len(b) if type(b) in SIZED else 0
-        if len(a) + n > LENGTH:
-            _too_long(len(a) + n)
-        a += b
-        if len(a) > LENGTH:
-            _too_long(len(a))
+    if type(a) is list:  # list += is list.extend
+        _grow(a, b)
         return a
     return _add(a, b)
 
 
 def _imul(a, b):
-    if type(a) is list and type(b) in INTS and b > 0 and len(a) * b > LENGTH:
+    if type(a) is not list:
+        return _mul(a, b)
+    if type(b) in INTS and b > 0 and len(a) * b > LENGTH:
         _too_long(len(a) * b)
-    return _mul(a, b) if type(a) is not list else _inplace_mul(a, b)
-
-
-def _inplace_mul(a, b):
     a *= b
     return a
 
@@ -140,12 +144,7 @@ def _attr(obj, name):
 
 def _extender(obj):
     def extend(items):
-        n = len(items) if type(items) in SIZED else 0
-        if len(obj) + n > LENGTH:
-            _too_long(len(obj) + n)
-        obj.extend(items)
-        if len(obj) > LENGTH:
-            _too_long(len(obj))
+        _grow(obj, items)
     return extend
 
 
