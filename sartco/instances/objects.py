@@ -6,8 +6,8 @@ open ("any": washer, nut, screw, bridge-h, bridge-v) or fixed to one shape. Rend
 shapes, colours and an anchor, the seed gives the object's first-order puts.
 
 An object is a filling of a seed's open slots that
-- places without error on an empty board (sartco.world.put, the one set of rules),
-- puts nothing on a screw,
+- places without error on an empty board (sartco.world.put, the one set of rules, which also
+  puts nothing on a screw),
 - repeats no washer, nut or screw within one stack (one cell). Bridges are exempt: their
   stacking is governed by the world's rules alone, and the published object bbb stacks the
   second cell of a bridge-h on another bridge-h. (Equivalently: no shape name repeats among
@@ -97,12 +97,9 @@ def _places(shapes, dxs, dys) -> bool:
     return True
 
 
-def _stack_rules_hold(shapes, stacks) -> bool:
+def _no_repeated_part(shapes, stacks) -> bool:
     for pieces in stacks.values():
-        names = [shapes[i] for i in pieces]
-        if "screw" in names[:-1]:
-            return False  # nothing on a screw
-        letters = [LETTERS[n] for n in names if n not in BRIDGES]
+        letters = [LETTERS[shapes[i]] for i in pieces if shapes[i] not in BRIDGES]
         if len(set(letters)) != len(letters):
             return False  # a washer, nut or screw twice in one stack
     return True
@@ -124,7 +121,7 @@ def fill(seed: Seed, colors=COLORS) -> list[ObjectSpec]:
         if not _places(shapes, dxs, dys):
             continue
         stacks = _stacks(shapes, dxs, dys)
-        if not _stack_rules_hold(shapes, stacks):
+        if not _no_repeated_part(shapes, stacks):
             continue
         cells = tuple(sorted(stacks))
         out.append(ObjectSpec(
