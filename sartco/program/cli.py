@@ -17,6 +17,7 @@ from collections import deque
 
 from sartco.cli import UserError
 from sartco.world import ErrorCode
+from sartco.world.board import MAX_SIDE
 
 from .lines import answer, malformed, parse_line
 from .pool import dispatch
@@ -38,8 +39,8 @@ def run(args) -> int:
     import sys
 
     for name in ("rows", "cols"):
-        if not 1 <= getattr(args, name) <= 64:
-            raise UserError(f"--{name} must be between 1 and 64, got {getattr(args, name)}")
+        if not 1 <= getattr(args, name) <= MAX_SIDE:
+            raise UserError(f"--{name} must be between 1 and {MAX_SIDE}, got {getattr(args, name)}")
     if args.batch < 1 or (args.workers is not None and args.workers < 1) or args.wall_time <= 0:
         raise UserError("--batch and --workers must be at least 1, --wall-time positive")
     serve(sys.stdin.buffer, sys.stdout.buffer, args.rows, args.cols,

@@ -21,7 +21,7 @@ import sys
 from itertools import repeat
 from operator import length_hint
 
-from sartco.world import Board, ErrorCode, WorldError, put
+from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, Board, ErrorCode, WorldError, put
 
 from .check import TYPE_METHODS, Forbidden, prepare
 
@@ -287,7 +287,7 @@ def run(source: str, rows: int, cols: int, limits, cache: bool = True) -> list:
         return [False, error, message, {}, 0]
     last = [board]
 
-    def init_board(rows=8, cols=8):
+    def init_board(rows=DEFAULT_ROWS, cols=DEFAULT_COLS):
         last[0] = Board(rows, cols)
         return last[0]
 
