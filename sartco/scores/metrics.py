@@ -11,7 +11,7 @@ exact_match
 code_bleu
     The `codebleu` package (0.7.0, tree-sitter-python 0.21), lang python, weights 0.25 x 4, one
     prediction against one reference, exactly as `codebleu.calc_codebleu([gold], [pred], "python")`
-    computes it, with two differences, both documented and tested:
+    computes it, with three differences, all documented and tested:
     1. Deterministic. codebleu's data-flow match builds the parent-variable lists of its data-flow
        graph with `list(set(...))` of variable names, so the variable numbering, and with it the
        score, depends on the process's string hash seed (PYTHONHASHSEED): on 600 random pairs of
