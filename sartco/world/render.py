@@ -52,9 +52,9 @@ def _piece_svg(shape: str, color: str, x: float, y: float, size: float, cell: tu
         return f'<polygon points="{pts}" fill="{fill}" stroke="#222"/>'
     if shape == "screw":  # a circle
         return f'<circle cx="{cx}" cy="{cy}" r="{h * .8:.1f}" fill="{fill}" stroke="#222"/>'
-    if shape in ("bridge-h", "bridge-v"):  # a bar along the bridge
-        if shape == "bridge-h":
-            return f'<rect x="{cell[0]}" y="{cy - h * .35:.1f}" width="{CELL}" height="{h * .7:.1f}" fill="{fill}" stroke="{fill}"/>'
+    if shape == "bridge-h":  # a bar along the bridge
+        return f'<rect x="{cell[0]}" y="{cy - h * .35:.1f}" width="{CELL}" height="{h * .7:.1f}" fill="{fill}" stroke="{fill}"/>'
+    if shape == "bridge-v":
         return f'<rect x="{cx - h * .35:.1f}" y="{cell[1]}" width="{h * .7:.1f}" height="{CELL}" fill="{fill}" stroke="{fill}"/>'
     return f'<text x="{cx}" y="{cy}" font-size="9" text-anchor="middle">{escape(shape[:6])}</text>'
 
