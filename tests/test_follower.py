@@ -8,6 +8,7 @@ import pytest
 
 from sartco.follower import FollowError, follow, follow_turn, read_placements, try_follow
 from sartco.program import execute
+from sartco.world import parse_key
 
 REPO = Path(__file__).resolve().parents[1]
 DATA = REPO.parent / "shared" / "sartco-data"
@@ -33,7 +34,7 @@ def build(code: str, context: str = "") -> dict:
 @pytest.mark.skipif(not PUBLISHED, reason=f"published data not found in {DATA}")
 @pytest.mark.parametrize("path", PUBLISHED, ids=lambda p: p.stem)
 def test_template_instructions_build_every_gold_board(path):
-    results, _ = _eval_tool().evaluate(DATA, [path.stem])
+    results = _eval_tool().evaluate(DATA, [path.stem])
     template = {variant: r for (_, variant), r in results.items() if r["source"] == "template"}
     assert template, "no template instructions in this file"
     for variant, r in template.items():
@@ -109,12 +110,11 @@ BNB = """def bnb(board, colors, x, y):
 
 
 def anchors(code: str, context: str) -> set[tuple[int, int]]:
-    calls: list[tuple[int, int]] = []
-    ns = {"board": None}
+    """The cells where the code calls the object function: run (through sartco.program) with a
+    stand-in function of the same name that puts one washer at its anchor."""
     name = context.split("(")[0].split()[-1]
-    ns[name] = lambda board, colors, x, y: calls.append((x, y))
-    exec(code, ns)  # noqa: S102
-    return set(calls)
+    probe = f"def {name}(board, colors, x, y):\n    put(board, 'washer', colors[0], x, y)\n"
+    return {parse_key(key) for key in build(code, probe)}
 
 
 @pytest.mark.parametrize("text, context, expected", [

@@ -7,10 +7,8 @@ executed on a fresh 8x8 board (after the given object function for regular board
 board is compared with the gold board (gold_boards/<base file>.json; a test variant shares its
 test file's boards). ES = 1 when the program ran and built exactly the gold board. The follower
 never sees the gold code; this tool reads only instructions, the given object function, and the
-gold boards.
-
-Execution uses sartco.program.execute/compare when that module exists, else a private runner on
-sartco.world (same rules, no sandbox: the code is the follower's own).
+gold boards. The programs run in the sandbox (sartco.program.execute_many) and are compared
+with sartco.program.compare.
 """
 from __future__ import annotations
 
@@ -21,6 +19,7 @@ from collections import defaultdict
 from pathlib import Path
 
 from sartco.follower import FollowError, follow
+from sartco.program import compare, execute_many
 
 REPO = Path(__file__).resolve().parents[1]
 DEFAULT_DATA = REPO.parent / "shared" / "sartco-data"
@@ -36,30 +35,6 @@ SIMPLE_VARIANTS = {
 }
 REGULAR_VARIANTS = {"regular": ("repetition", "template"), "regular_hai": ("repetition", "human"),
                     "regular_mg": ("repetition", "model")}
-
-
-def _runner():
-    """run_all([code, ...]) -> [(ok, message, cells), ...]; same(built, target) -> 0/1."""
-    try:
-        from sartco.program import compare, execute_many
-
-        def run_all(programs):
-            return [(ex.ok, ex.message, ex.cells) for ex in execute_many(programs, rows=8, cols=8)]
-
-        return run_all, (lambda built, target: int(compare(built, target).es)), "sartco.program"
-    except ImportError:
-        from sartco.world import Board, put
-
-        def run(code: str):
-            ns = {"put": put, "init_board": Board, "board": Board(8, 8)}
-            try:
-                exec(compile(code, "<follower>", "exec"), ns)  # noqa: S102 - the follower's own code
-            except Exception as exc:  # noqa: BLE001
-                return False, f"{type(exc).__name__}: {exc}", ns["board"].cells()
-            return True, "", ns["board"].cells()
-
-        return (lambda programs: [run(c) for c in programs]), (lambda b, t: int(b == t)), \
-            "private runner (sartco.world)"
 
 
 def samples(doc):
@@ -80,7 +55,6 @@ def base_file(name: str) -> str:
 
 def evaluate(data: Path = DEFAULT_DATA, files: list[str] | None = None):
     """{(file, variant): {"n", "es", "parsed", "failures": [...]}} over the published files."""
-    run_all, same, how = _runner()
     results: dict[tuple[str, str], dict] = {}
     pending = []  # (result row, sample id, texts, program, gold board), run in one batch
     for path in sorted((data / "published").glob("*.json")):
@@ -109,13 +83,13 @@ def evaluate(data: Path = DEFAULT_DATA, files: list[str] | None = None):
                 r["parsed"] += 1
                 program = (context + "\n" if regular else "") + "board = init_board(8, 8)\n" + code
                 pending.append((r, sid, texts, program, gold[sid]))
-    outcomes = run_all([program for *_, program, _ in pending])
-    for (r, sid, texts, _, target), (ok, message, cells) in zip(pending, outcomes):
-        if ok and same(cells, target):
+    outcomes = execute_many([program for *_, program, _ in pending], rows=8, cols=8)
+    for (r, sid, texts, _, target), ex in zip(pending, outcomes):
+        if ex.ok and compare(ex.cells, target).es:
             r["es"] += 1
         else:
-            r["failures"].append((sid, "run" if not ok else "board", message, texts))
-    return results, how
+            r["failures"].append((sid, "run" if not ex.ok else "board", ex.message, texts))
+    return results
 
 
 def main(argv=None) -> int:
@@ -128,8 +102,7 @@ def main(argv=None) -> int:
     if not (args.data / "published").is_dir():
         print(f"eval_follower: no published data in {args.data}", file=sys.stderr)
         return 2
-    results, how = evaluate(args.data, args.file)
-    print(f"executor: {how}")
+    results = evaluate(args.data, args.file)
     print(f"{'file':24} {'variant':20} {'source':9} {'task':18} {'n':>5} {'parsed':>7} {'run err':>7} "
           f"{'other':>6} {'ES %':>7}")
     totals = defaultdict(lambda: [0, 0])
