@@ -23,12 +23,13 @@ attempt without code after attempts with code is lost, not aborted: ES/EM/CodeBL
 """
 from __future__ import annotations
 
-import math
-
 from clemcore.clemgame import GameScorer, metrics
+
+from sartco.world import ErrorCode
 
 from .building import ATTEMPTS_KEY, BUILD_KEY, BuildRecord
 from .feedback import max_attempts
+from .outcomes import family
 
 NAN = float("nan")
 SCORES = ("Execution Success", "Exact Match", "CodeBLEU", "Cell Precision", "Cell Recall", "Cell F1")
@@ -39,9 +40,6 @@ class BuildScorer(GameScorer):
     """`gold_key` names the instance field holding the gold code of the builder's style."""
 
     gold_key = "gold_code"
-
-    def __init__(self, game_name: str, experiment: dict, game_instance: dict):
-        super().__init__(game_name, experiment, game_instance)
 
     def compute_round_score(self, round_idx, round_events) -> None:
         pass  # the build is judged once, at the end of the episode
@@ -56,14 +54,14 @@ class BuildScorer(GameScorer):
         if aborted or record is None:
             for name in SCORES:
                 self.log_episode_score(name, NAN)
-            category = record.category if record else "parse_error"
+            category = record.category if record else str(ErrorCode.PARSE_ERROR)
             self.log_episode_score("Error Category", category)
-            self.log_episode_score("Error Family", record.family if record else "parse")
+            self.log_episode_score("Error Family", family(category))
             self.log_episode_score("Puts", 0)
             self.log_episode_score(metrics.BENCH_SCORE, NAN)
             return
         gold = self.game_instance[self.gold_key]
-        no_code = record.error == "parse_error"  # a feedback episode's last answer held no code
+        no_code = record.error == ErrorCode.PARSE_ERROR  # a feedback episode's last answer held no code
         self.log_episode_score("Execution Success", int(record.es))
         self.log_episode_score("Exact Match", 0 if no_code else int(exact_match(record.builder_code, gold)))
         self.log_episode_score("CodeBLEU", 0.0 if no_code else float(code_bleu(record.builder_code, gold)))
@@ -88,7 +86,3 @@ class BuildScorer(GameScorer):
         self.log_episode_score("Attempts", len(attempts))
         self.log_episode_score("Max Attempts", n)
         self.log_episode_score("Attempt Categories", CATEGORY_SEPARATOR.join(a.category for a in attempts))
-
-
-def is_nan(value) -> bool:
-    return isinstance(value, float) and math.isnan(value)
