@@ -7,8 +7,8 @@
 Feedback (repair) experiments, several attempts: the last attempt decides, except that a last
 attempt without code loses (the builder did play) unless no attempt held code at all (aborted,
 as in the paper's protocol) - `outcome_of_attempts`.
-Games call `outcome_for` / `set_outcome` / `outcome_of_attempts` and `log_outcome`; nothing else
-maps codes to outcomes.
+Games call `set_outcome` (one attempt) or `set_attempts_outcome` (several) and `log_outcome`;
+nothing else maps codes to outcomes.
 """
 from __future__ import annotations
 
@@ -60,9 +60,7 @@ def outcome_for(category: str | ErrorCode | None) -> Outcome:
 
 def set_outcome(state, category: str | ErrorCode | None) -> Outcome:
     """Move a clemcore GameState to the outcome of `category`."""
-    outcome = outcome_for(category)
-    {Outcome.SUCCESS: state.succeed, Outcome.FAILURE: state.failed, Outcome.ABORTED: state.abort}[outcome]()
-    return outcome
+    return _enter(state, outcome_for(category))
 
 
 def outcome_of_attempts(categories) -> Outcome:
@@ -79,7 +77,10 @@ def outcome_of_attempts(categories) -> Outcome:
 
 def set_attempts_outcome(state, categories) -> Outcome:
     """Move a clemcore GameState to the outcome of these attempts (outcome_of_attempts)."""
-    outcome = outcome_of_attempts(categories)
+    return _enter(state, outcome_of_attempts(categories))
+
+
+def _enter(state, outcome: Outcome) -> Outcome:
     {Outcome.SUCCESS: state.succeed, Outcome.FAILURE: state.failed, Outcome.ABORTED: state.abort}[outcome]()
     return outcome
 
