@@ -73,19 +73,19 @@ def compose_program(builder_code: str, *, given_code: str = "", rows: int = 8, c
 
 
 def build(builder_code: str, target: dict, *, given_code: str = "", rows: int = 8, cols: int = 8,
-          turn_codes: list[str] | None = None, limits=None) -> BuildRecord:
+          turn_codes: list[str] | None = None) -> BuildRecord:
     """Execute the builder's code on a fresh board and compare it with the target."""
     from sartco.program import compare, execute  # the only place model-written code runs
 
     program = compose_program(builder_code, given_code=given_code, rows=rows, cols=cols)
-    ex = execute(program, rows=rows, cols=cols) if limits is None else execute(program, rows=rows, cols=cols, limits=limits)
+    ex = execute(program, rows=rows, cols=cols)
     cmp = compare(ex.cells, target)
     if not ex.ok:
         category = str(ErrorCode(ex.error)) if ex.error is not None else str(ErrorCode.RUNTIME_ERROR)
         es = 0
     else:
         es = int(cmp.es)
-        category = SUCCESS_CATEGORY if es else str(ErrorCode(cmp.category)) if cmp.category else SUCCESS_CATEGORY
+        category = SUCCESS_CATEGORY if es else str(ErrorCode(cmp.category))  # es == (cmp.category is None)
     return BuildRecord(
         builder_code=builder_code, program=program, ok=bool(ex.ok),
         error=None if ex.error is None else str(ErrorCode(ex.error)), message=ex.message or "",
