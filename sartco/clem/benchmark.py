@@ -12,7 +12,7 @@ import this module, not the class, into a master.py:
 """
 from __future__ import annotations
 
-from clemcore.clemgame import GameBenchmark, GameSpec
+from clemcore.clemgame import GameBenchmark
 
 from .pictures import attach_all
 
@@ -20,9 +20,6 @@ from .pictures import attach_all
 class BuildBenchmark(GameBenchmark):
     master_class = None   # a DialogueGameMaster subclass: (game_spec, experiment, player_models)
     scorer_class = None   # a GameScorer subclass: (game_name, experiment, game_instance)
-
-    def __init__(self, game_spec: GameSpec):
-        super().__init__(game_spec)
 
     def create_game_master(self, experiment: dict, player_models):
         return self.master_class(self.game_spec, experiment, player_models)

@@ -14,9 +14,6 @@ from .builder import RULEBASED
 
 
 class RulebasedModel(CustomResponseModel):
-    def __init__(self, model_spec: ModelSpec):
-        super().__init__(model_spec)
-
     def supports_batching(self) -> bool:
         # clemcore's batch path only injects players for the names mock/programmatic
         return False
