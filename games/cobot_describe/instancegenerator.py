@@ -39,7 +39,6 @@ EXPERIMENTS = {
     "regular_boards_simple_objects": ("regular", "simple", "regular_simple", DESCRIBED_TASK["regular"]),
     "regular_boards_complex_objects": ("regular", "complex", "regular_complex", DESCRIBED_TASK["regular"]),
 }
-TEMPLATE_STYLE = {"optimal_function": "single_turn", "repetition": "regular"}
 
 
 def load_split(dataset: Path, stem: str, split: str) -> list[dict]:

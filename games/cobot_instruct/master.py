@@ -35,8 +35,6 @@ from sartco.clem.outcomes import log_outcome, set_attempts_outcome
 from sartco.clem.parsing import parse_code
 from sartco.clem.scoring import BuildScorer
 
-GAME_NAME = "cobot_instruct"
-
 
 class CobotInstruct(DialogueGameMaster):
 
