@@ -23,7 +23,9 @@ import re
 from collections import Counter, defaultdict
 from pathlib import Path
 
+from sartco.clem.feedback import max_attempts
 from sartco.cli import UserError
+from sartco.world import ErrorCode
 
 TASK_ORDER = ["first_order", "sequence_function", "optimal_function", "repetition"]
 SOURCE_ORDER = ["template", "human", "codellama", "gpt4", "claude"]
@@ -72,7 +74,10 @@ def collect(results: Path, games: list[str] | None = None) -> list[dict]:
         if games and game not in games:
             continue
         scores = _load(path).get("episode scores", {})
-        attempts = exp.get("attempts") or 1 + (exp.get("repair_attempts") or 0)
+        try:
+            attempts = max_attempts(exp)
+        except ValueError as exc:
+            raise UserError(f"{exp_dir / 'experiment.json'}: {exc}") from None
         episodes.append({
             "game": game, "model": exp_dir.parent.parent.name, "experiment": exp["name"],
             "board_type": exp["board_type"], "object_type": exp["object_type"], "task": exp["task"],
@@ -80,8 +85,8 @@ def collect(results: Path, games: list[str] | None = None) -> list[dict]:
             "aborted": int(scores.get("Aborted", 0) or 0),
             "em": _num(scores.get("Exact Match")), "cb": _num(scores.get("CodeBLEU")),
             "es": _num(scores.get("Execution Success")), "f1": _num(scores.get("Cell F1")),
-            "category": scores.get("Error Category") or ("parse_error" if scores.get("Aborted") else "unknown"),
-            "max_attempts": int(attempts), "feedback_of": exp.get("feedback_of", ""),
+            "category": scores.get("Error Category") or (str(ErrorCode.PARSE_ERROR) if scores.get("Aborted") else "unknown"),
+            "max_attempts": attempts, "feedback_of": exp.get("feedback_of", ""),
             "es1": _num(scores.get("ES@1", scores.get("Execution Success"))),
             "attempts_used": _num(scores.get("Attempts")),
         })
@@ -105,6 +110,11 @@ def _order(key: tuple) -> tuple:
     game, board, obj, task, source = key[:5]
     return (game, board != "simple", obj != "simple", TASK_ORDER.index(task) if task in TASK_ORDER else 99,
             SOURCE_ORDER.index(source) if source in SOURCE_ORDER else 99, source) + tuple(str(k) for k in key[5:])
+
+
+def _natural(key: tuple) -> list:
+    """Sort key of (model, game, experiment): numbers inside names in numeric order."""
+    return [int(t) if t.isdigit() else t for t in re.split(r"(\d+)", "/".join(key))]
 
 
 def table3(episodes: list[dict]) -> tuple[list[str], list[dict]]:
@@ -149,8 +159,7 @@ def errors(episodes: list[dict]) -> tuple[list[str], list[dict]]:
         counts[(e["model"], e["game"], e["experiment"])][e["category"]] += 1
     categories = sorted({c for counter in counts.values() for c in counter}, key=lambda c: (c != "success", c))
     rows = []
-    natural = lambda key: [int(t) if t.isdigit() else t for t in re.split(r"(\d+)", "/".join(key))]  # noqa: E731
-    for (model, game, experiment) in sorted(counts, key=natural):
+    for (model, game, experiment) in sorted(counts, key=_natural):
         counter = counts[(model, game, experiment)]
         rows.append({"model": model, "game": game, "experiment": experiment,
                      "episodes": sum(counter.values()), **{c: counter.get(c, 0) for c in categories}})
@@ -165,9 +174,8 @@ def repair(episodes: list[dict]) -> tuple[list[str], list[dict]]:
     for e in episodes:
         if e["max_attempts"] > 1:
             groups[(e["model"], e["game"], e["experiment"])].append(e)
-    natural = lambda key: [int(t) if t.isdigit() else t for t in re.split(r"(\d+)", "/".join(key))]  # noqa: E731
     rows = []
-    for key in sorted(groups, key=natural):
+    for key in sorted(groups, key=_natural):
         model, game, experiment = key
         group = groups[key]
         first = sum(1 for e in group if e["es1"])
