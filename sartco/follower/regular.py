@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import re
 
-from ..world.components import COLORS
+from ..world import COLORS, parse_key
 from . import parse as p
 from .parse import Arrangement, FollowError
 
@@ -35,11 +35,7 @@ def footprint(context: str, name: str | None, n_colors: int, rows: int = 8, cols
     ex = execute(program, rows=size, cols=size)
     if not ex.ok or not ex.cells:
         return None
-    cells = set()
-    for key in ex.cells:
-        x, y = map(int, key.split(":"))
-        cells.add((x - pad, y - pad))
-    return frozenset(cells)
+    return frozenset((x - pad, y - pad) for x, y in map(parse_key, ex.cells))
 
 
 def _span(cells: Cells) -> tuple[int, int]:
@@ -52,8 +48,9 @@ def arrange(text: str, context: str = "", rows: int = 8, cols: int = 8) -> Arran
     """Read a regular-board instruction; decide where the object's anchors go."""
     kind, m = p.arrangement_kind(text)
     colors = p.colors_of(text)
-    name = function_name(context) or p.regular_name(text)
-    cells = footprint(context, function_name(context), len(colors), rows, cols)
+    given = function_name(context)
+    name = given or p.regular_name(text)
+    cells = footprint(context, given, len(colors), rows, cols)
     size = p.size_of(text) or (_span(cells) if cells else (1, 1))
     h, w = size
     if cells is None:
