@@ -47,16 +47,17 @@ from pathlib import Path
 from typing import Any, Iterator
 
 from sartco.cli import UserError
-
 from sartco.program import execute_many
+from sartco.world import LETTERS
 
-FORMAT = "sartco-dataset/1"
+from .config import SPLITS
+from .generate import FORMAT, dumps
+
 FILE_RE = re.compile(
     r"^(?P<prefix>sb_so|rb_so|rb_cho)_(?P<split>train|val|test)(?:_(?P<variant>hc|mg|gpt4_mg|claude_mg))?\.json$"
 )
 PREFIXES = {"sb_so": ("simple", "simple"), "rb_so": ("regular", "simple"), "rb_cho": ("regular", "complex")}
 PUBLISHED_OBJECT_TYPE = {"simple": "simple", "complex": "challenge"}  # ours -> theirs
-SPLITS = ("train", "val", "test")
 SOURCES = {None: "template", "hc": "human", "mg": "codellama", "gpt4_mg": "gpt4", "claude_mg": "claude"}
 SOURCE_ORDER = ("template", "human", "codellama", "gpt4", "claude")
 # variant dialogue key -> (our style, the code style its <Editor> holds)
@@ -67,7 +68,6 @@ VARIANT_KEYS = {
 }
 SIMPLE_KEYS = ("combo_name", "shapes", "colors", "x", "y", "orientations", "quadrant", "seed_template", "code", "dialogues")
 REGULAR_KEYS = ("combo_name", "shapes", "colors", "quadrant", "seed_template", "occupied_rows", "occupied_cols", "code", "dialogues")
-LETTERS = {"washer": "w", "nut": "n", "screw": "s", "bridge-h": "b", "bridge-v": "b"}
 
 WORD_RE = re.compile(r"[A-Za-z]{2,}")
 VOCABULARY = frozenset(
@@ -534,10 +534,6 @@ def _ordered(records: dict[str, list]) -> list[str]:
     return sorted(records, key=_ordered_key)
 
 
-def _dump(obj: Any) -> str:
-    return json.dumps(obj, indent=1, ensure_ascii=False, sort_keys=False) + "\n"
-
-
 def import_published(src: Path, out: Path, gold_dir: Path | None) -> dict:
     """Convert the published files in src into a dataset in out; returns the manifest."""
     importer = Importer(src, gold_dir)
@@ -549,7 +545,7 @@ def import_published(src: Path, out: Path, gold_dir: Path | None) -> dict:
     except OSError as exc:
         raise UserError(f"--out {out}: cannot create the folder: {exc.strerror}") from None
     for name in _ordered(importer.records):
-        (out / name).write_text(_dump(importer.records[name]), encoding="utf-8")
+        (out / name).write_text(dumps(importer.records[name]), encoding="utf-8")
         files[name] = len(importer.records[name])
     inputs = {name: hashlib.sha256((src / name).read_bytes()).hexdigest() for name in sorted(importer.read_counts)}
     manifest = {
@@ -566,7 +562,7 @@ def import_published(src: Path, out: Path, gold_dir: Path | None) -> dict:
         "files": files,
         "defects": [asdict(d) for d in importer.defects],
     }
-    (out / "manifest.json").write_text(_dump(manifest), encoding="utf-8")
+    (out / "manifest.json").write_text(dumps(manifest), encoding="utf-8")
     return manifest
 
 
