@@ -35,8 +35,6 @@ LABELS = {"first_order": ("Output",), "sequence_function": ("Function", "Usage")
           "optimal_function": ("Function", "Usage"), "repetition": ("Output",)}
 INSTRUCTION_STYLE = {"first_order": "multi_turn", "sequence_function": "single_turn",
                      "optimal_function": "single_turn", "repetition": "regular"}
-CODE_STYLE = {"first_order": "first_order", "sequence_function": "sequence_function",
-              "optimal_function": "optimal_function", "repetition": "repetition"}
 
 
 def _check_task(record: dict, task: str) -> None:
@@ -66,7 +64,7 @@ def instruction_text(record: dict, task: str, source: str = "template", step: in
 def answer(record: dict, task: str) -> list[list[tuple[str, str]]]:
     """The gold answer as (instruction, [(label, code), ...]) pairs: one pair per step for
     first_order, a single pair otherwise."""
-    code = record["code"][CODE_STYLE[task]]
+    code = record["code"][task]  # a task is named after its code style
     if task == "first_order":
         return [(text, [("Output", put)]) for text, put in zip(instruction_text(record, task), code["steps"])]
     if task == "repetition":
