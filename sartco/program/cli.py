@@ -16,7 +16,7 @@ import threading
 from collections import deque
 
 from sartco.cli import UserError
-from sartco.world import ErrorCode
+from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, ErrorCode
 from sartco.world.board import MAX_SIDE
 
 from .lines import answer, malformed, parse_line
@@ -28,8 +28,8 @@ IN_FLIGHT = 2  # batches being run at once (the next one queues on each worker's
 
 
 def configure(parser) -> None:
-    parser.add_argument("--rows", type=int, default=8, help="board rows (default 8)")
-    parser.add_argument("--cols", type=int, default=8, help="board columns (default 8)")
+    parser.add_argument("--rows", type=int, default=DEFAULT_ROWS, help=f"board rows (default {DEFAULT_ROWS})")
+    parser.add_argument("--cols", type=int, default=DEFAULT_COLS, help=f"board columns (default {DEFAULT_COLS})")
     parser.add_argument("--workers", type=int, default=None, help="worker processes (default min(2, CPUs))")
     parser.add_argument("--batch", type=int, default=1024, help="most programs per batch (default 1024)")
     parser.add_argument("--wall-time", type=float, default=Limits().wall_time, help="seconds per program (default %(default)s)")
@@ -119,7 +119,7 @@ def _answers(lines, rows, cols, limits, workers, cache) -> bytes:
     return b"\n".join(text) + b"\n"
 
 
-def serve(inp, out, rows: int = 8, cols: int = 8, limits: Limits | None = None, *,
+def serve(inp, out, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, limits: Limits | None = None, *,
           workers: int | None = None, batch: int = 1024, cache: bool = True) -> int:
     """The JSON-lines loop over binary streams; returns the number of lines answered.
 

@@ -28,7 +28,7 @@ import time
 from collections import deque
 from pathlib import Path
 
-from sartco.world import Board, ErrorCode, WorldError
+from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, Board, ErrorCode, WorldError
 
 from .records import Execution, Limits
 
@@ -218,7 +218,7 @@ def dispatch(mode: str, items: list[bytes], keys: list, rows: int, cols: int, li
     return results
 
 
-def execute_many(programs, rows: int = 8, cols: int = 8, limits: Limits | None = None, *,
+def execute_many(programs, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, limits: Limits | None = None, *,
                  workers: int | None = None, cache: bool = True) -> list[Execution]:
     """Run many programs, each on its own fresh board; results in input order."""
     try:
@@ -245,6 +245,6 @@ def execute_many(programs, rows: int = 8, cols: int = 8, limits: Limits | None =
         return [_failed(E.RUNTIME_ERROR, f"sandbox failure: {type(exc).__name__}: {exc}") for _ in range(n)]
 
 
-def execute(code: str, rows: int = 8, cols: int = 8, limits: Limits | None = None) -> Execution:
+def execute(code: str, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, limits: Limits | None = None) -> Execution:
     """Run one program on a fresh rows x cols board (see the package docstring)."""
     return execute_many([code], rows, cols, limits, workers=1)[0]
