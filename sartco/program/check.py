@@ -282,22 +282,21 @@ def instrument(tree: ast.Module) -> ast.Module:
     offences: list[Forbidden] = []
     plan_of, wrap_of, name_type, const_type, load_type = PLAN.get, WRAPS.get, ast.Name, ast.Constant, ast.Load
 
-    def enter(child):
-        """Check one child node; return what to visit next (the child, or its wrapped form when a
-        growth check applies), or None for a constant or a name (checked here, nothing below)."""
-        ct = type(child)
-        if ct is const_type or child is None:
-            return None
-        if ct is name_type:
-            if type(child.ctx) is not load_type:
-                _name(child, child.id, True)
-            elif child.id not in seen_loads:
-                _name(child, child.id, False)
-                seen_loads.add(child.id)
-            return None
-        wrap = wrap_of(ct)
+    def visit(child):
+        """Check a child that is neither a constant nor a name; return what to visit (the child,
+        or its wrapped form when a growth check applies)."""
+        wrap = wrap_of(type(child))
         return child if wrap is None else wrap(child, wrapped)
 
+    def check_name(child):
+        if type(child.ctx) is not load_type:
+            _name(child, child.id, True)
+        elif child.id not in seen_loads:
+            _name(child, child.id, False)
+            seen_loads.add(child.id)
+
+    # leaves (constants, names) are handled where they are met, without a call for a constant
+    # or a name already seen, because they make up two thirds of a typical tree
     while todo:
         node = pop()
         try:
@@ -310,19 +309,31 @@ def instrument(tree: ast.Module) -> ast.Module:
                 rule(node)
             for field in singles:
                 child = getattr(node, field)
-                new = enter(child)
-                if new is not None:
-                    if new is not child:
-                        setattr(node, field, new)
-                    push(new)
+                ct = type(child)
+                if ct is const_type or child is None:
+                    continue
+                if ct is name_type:
+                    if type(child.ctx) is not load_type or child.id not in seen_loads:
+                        check_name(child)
+                    continue
+                new = visit(child)
+                if new is not child:
+                    setattr(node, field, new)
+                push(new)
             for field in lists:
                 value = getattr(node, field)
-                for i, child in enumerate(value):
-                    new = enter(child)
-                    if new is not None:
-                        if new is not child:
-                            value[i] = new
-                        push(new)
+                for child in value:
+                    ct = type(child)
+                    if ct is const_type or child is None:
+                        continue
+                    if ct is name_type:
+                        if type(child.ctx) is not load_type or child.id not in seen_loads:
+                            check_name(child)
+                        continue
+                    new = visit(child)
+                    if new is not child:
+                        value[value.index(child)] = new  # nodes compare by identity
+                    push(new)
         except Forbidden as exc:
             offences.append(exc)
     if offences:

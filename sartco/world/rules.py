@@ -24,49 +24,60 @@ def _fail(code: ErrorCode, message: str):
     raise WorldError(code, message)
 
 
-def check(board: Board, shape, color, x, y) -> list[tuple[int, int]]:
-    """Raise the first rule a placement violates; return the cells it would cover."""
+def _bad_coordinates(x, y):
     for name, value in (("x", x), ("y", y)):
         if type(value) is not int:
             _fail(E.TYPE_ERROR, f"{name} must be an integer, got {type(value).__name__} {value!r:.40}")
+
+
+def check(board: Board, shape, color, x, y) -> tuple[int, int] | None:
+    """Raise the first rule a placement violates; return a bridge's second cell (None for a
+    piece that covers only (x, y)). Written for speed: it runs for every put of every program."""
+    if type(x) is not int or type(y) is not int:
+        _bad_coordinates(x, y)
     if not (0 <= x < board.rows and 0 <= y < board.cols):
         _fail(E.DIMENSIONS_MISMATCH, f"({x}, {y}) is outside the {board.rows}x{board.cols} board")
     stacks = board.stacks
     anchor = stacks[x][y]
-    if len(anchor) >= MAX_DEPTH:
+    height = len(anchor)
+    if height >= MAX_DEPTH:
         _fail(E.VALUE_ERROR, f"cell ({x}, {y}) is full ({MAX_DEPTH} pieces)")
-    cells = [(x, y)]
     offset = BRIDGES.get(shape) if isinstance(shape, str) else None
+    second = None
     if offset is not None:
         x2, y2 = x + offset[0], y + offset[1]
         if not (x2 < board.rows and y2 < board.cols):
             _fail(E.VALUE_ERROR, f"{shape} at ({x}, {y}) needs cell ({x2}, {y2}), which is off the board")
-        if len(anchor) >= 2:
-            _fail(E.BRIDGE_PLACEMENT, f"{shape} at ({x}, {y}) would sit at level {len(anchor) + 1}; bridges go on level 1 or 2")
-        if len(stacks[x2][y2]) != len(anchor):
-            _fail(E.DEPTH_MISMATCH, f"{shape} at ({x}, {y}) spans cells of heights {len(anchor)} and {len(stacks[x2][y2])}")
-        cells.append((x2, y2))
-    for cx, cy in cells:
-        below = stacks[cx][cy]
-        if below and below[-1][0] in NOTHING_ON_TOP:
-            _fail(E.NOT_ON_TOP_OF_SCREW, f"cell ({cx}, {cy}) has a {below[-1][0]} on top; nothing goes on a screw")
-    if anchor and anchor[-1][0] == shape:
-        _fail(E.SAME_SHAPE_STACKING, f"{shape} directly on a {shape} at ({x}, {y})")
-    if len(anchor) >= 2 and anchor[-2][0] == shape:
-        _fail(E.SAME_SHAPE_AT_ALTERNATE_LEVELS, f"{shape} two levels above a {shape} at ({x}, {y})")
+        if height >= 2:
+            _fail(E.BRIDGE_PLACEMENT, f"{shape} at ({x}, {y}) would sit at level {height + 1}; bridges go on level 1 or 2")
+        if len(stacks[x2][y2]) != height:
+            _fail(E.DEPTH_MISMATCH, f"{shape} at ({x}, {y}) spans cells of heights {height} and {len(stacks[x2][y2])}")
+        second = (x2, y2)
+    if height:
+        top = anchor[-1][0]
+        if top in NOTHING_ON_TOP:
+            _fail(E.NOT_ON_TOP_OF_SCREW, f"cell ({x}, {y}) has a {top} on top; nothing goes on a screw")
+        if second is not None and stacks[x2][y2][-1][0] in NOTHING_ON_TOP:
+            _fail(E.NOT_ON_TOP_OF_SCREW, f"cell ({x2}, {y2}) has a {stacks[x2][y2][-1][0]} on top; nothing goes on a screw")
+        if top == shape:
+            _fail(E.SAME_SHAPE_STACKING, f"{shape} directly on a {shape} at ({x}, {y})")
+        if height >= 2 and anchor[-2][0] == shape:
+            _fail(E.SAME_SHAPE_AT_ALTERNATE_LEVELS, f"{shape} two levels above a {shape} at ({x}, {y})")
     if shape not in SHAPES:
         _fail(E.KEY_ERROR, f"unknown shape {shape!r:.40}; expected one of {', '.join(SHAPES)}")
     if color not in COLORS:
         _fail(E.KEY_ERROR, f"unknown colour {color!r:.40}; expected one of {', '.join(COLORS)}")
-    return cells
+    return second
 
 
 def put(board: Board, shape, color, x, y) -> Board:
     """Place one piece, or raise WorldError and leave the board unchanged."""
     if not isinstance(board, Board):
         _fail(E.TYPE_ERROR, f"put: the first argument must be a board, got {type(board).__name__}")
+    second = check(board, shape, color, x, y)
     piece = (shape, color)
-    for cx, cy in check(board, shape, color, x, y):
-        board.stacks[cx][cy].append(piece)
+    board.stacks[x][y].append(piece)
+    if second is not None:
+        board.stacks[second[0]][second[1]].append(piece)
     board.puts += 1
     return board
