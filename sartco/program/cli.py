@@ -102,7 +102,7 @@ def _code_key(raw: bytes) -> bytes:
 
 def _answers(lines, rows, cols, limits, workers, cache) -> bytes:
     """The output text of one batch (every line answered, whatever happens)."""
-    keys = [_code_key(raw) for _, raw in lines] if cache else range(len(lines))
+    keys = [_code_key(raw) for _, raw in lines] if cache else None
     items = [b"%d %s" % (number, raw) for number, raw in lines]
     try:
         answers = dispatch("line", items, keys, rows, cols, limits, workers, cache)

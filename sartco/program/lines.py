@@ -46,7 +46,7 @@ def _check_cells(cells) -> str | None:
 
 def parse_line(number: int, raw: bytes, check_target: bool = True):
     """(id, code, target or None, None) or (id or None, None, None, problem). With check_target
-    False the target's cells are left unchecked (see handle)."""
+    False the target's cells are left unchecked (see finish)."""
     try:
         item = json.loads(raw)
     except (ValueError, RecursionError) as exc:
@@ -81,9 +81,10 @@ def malformed(ident, problem: str) -> dict:
     return {"id": ident, "ok": False, "error": ErrorCode.PARSE_ERROR, "message": problem, "cells": {}}
 
 
-def handle(number: int, raw: bytes, run) -> str:
-    """The output line (JSON text) for one input line; `run(code)` -> (ok, error, message, cells)."""
-    ident, code, target, problem = parse_line(number, raw, check_target=False)
+def finish(number: int, parsed: tuple, run) -> str:
+    """The output line (JSON text) for one input line, given what parse_line(number, raw,
+    check_target=False) made of it; `run(code)` -> (ok, error, message, cells)."""
+    ident, code, target, problem = parsed
     if problem is not None:
         return encode(malformed(ident, problem))
     ok, error, message, cells = run(code)

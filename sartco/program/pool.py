@@ -1,16 +1,21 @@
 """The parent side: persistent worker processes, batching, hard time limits, restarts.
 
 `dispatch` sends items in chunks (a header line + one line per item) to up to `workers` worker
-processes (default: min(2, CPUs)), each driven by one thread; items with the same key (the
-source) go to the same worker, so its code cache sees all repeats. `execute_many` sends programs
-(mode "code"), `sartco execute` sends its raw input lines (mode "line": the worker parses, runs,
-compares and writes the finished output line, so the parent only routes bytes); `execute` is a
-batch of one. A
-worker answers each program on its own line, so the parent knows which program is running and
+processes (default: min(2, CPUs)), each driven by one thread that reads the answers while a
+second one writes the chunks (so a worker finds its next chunk waiting). Items with the same key
+(the source) go to the same worker, so its code cache sees all repeats; without keys the shares
+are balanced by size. `execute_many` sends programs (mode "code"), `sartco execute` sends its raw
+input lines (mode "line": the worker parses, runs, compares and writes the finished output line,
+so the parent only routes bytes); `execute` is a batch of one.
+
+A worker answers each program on its own line, so the parent knows which program is running and
 gives each one `Limits.wall_time` seconds from the moment the previous answer was read. A late
 answer kills the worker (SIGKILL, then reaped) and the program gets `timeout`; a worker that
 dies gets its program `resource_limit` (killed by a signal, e.g. memory) or `runtime_error`.
-The rest of the batch goes to a fresh worker. Nothing raises out of `execute`/`execute_many`.
+The rest of the batch goes to a fresh worker. A worker compiles each chunk ahead (worker.py), for
+at most a tenth of a wall time, which the chunk's first program shares: so a kill before the first
+answer of a chunk of several blames nobody yet, and the rest runs again, each program compiled
+at its own turn. Nothing raises out of `execute`/`execute_many`.
 
 Workers are started lazily with `python -I -S`, survive between calls (the common case pays
 no start-up) and are killed at exit or by `shutdown()`. After a fork the child starts its own.
@@ -18,6 +23,7 @@ no start-up) and are killed at exit or by `shutdown()`. After a fork the child s
 from __future__ import annotations
 
 import atexit
+import fcntl
 import json
 import os
 import select
@@ -34,11 +40,12 @@ from .records import Execution, Limits
 
 E = ErrorCode
 BATCH = 32  # a call with fewer items than this uses one worker
-CHUNK = 256  # items per worker round trip
-PATIENCE = 0.002  # seconds to wait before reading more answers of a running batch
-PATIENT_UNTIL = 16  # ...unless only this many answers are left: read them as they come, so the
-# worker does not sit idle, its chunk finished, while the parent sleeps
+CHUNK = 64  # items per worker round trip
+PATIENCE = 0.01  # most seconds to wait before reading more answers of a running batch: while a
+# worker works, the parent wakes up seldom and reads many answers at once; as the end of the batch
+# nears, the waits shrink to half the estimated rest, so the last answers are read as they come
 START_TIMEOUT = 30.0
+PIPE_SIZE = 1 << 20  # bytes of answers a worker can write ahead of the parent
 _ROOT = str(Path(__file__).resolve().parents[2])
 _BOOT = (
     "import sys; sys.path.insert(0, sys.argv[1]); "
@@ -64,6 +71,11 @@ class _Worker:
             stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
             close_fds=True, cwd="/",
         )
+        for pipe in (self.proc.stdin, self.proc.stdout):  # room for items sent ahead and answers that
+            try:  # pile up while the parent waits (Linux; elsewhere the default size)
+                fcntl.fcntl(pipe.fileno(), fcntl.F_SETPIPE_SZ, PIPE_SIZE)
+            except (AttributeError, OSError):
+                pass
         self.lines.clear()
         self.tail = b""
         if self._readline(time.monotonic() + START_TIMEOUT) != b'"ready"':
@@ -93,7 +105,7 @@ class _Worker:
             remaining = deadline - time.monotonic()
             if remaining <= 0 or not select.select([fd], [], [], remaining)[0]:
                 return None
-            chunk = os.read(fd, 1 << 16)
+            chunk = os.read(fd, PIPE_SIZE)  # all that piled up
             if not chunk:
                 raise _Dead("the sandbox worker ended")
             parts = (self.tail + chunk).split(b"\n")
@@ -101,36 +113,61 @@ class _Worker:
             self.lines.extend(parts)
         return self.lines.popleft()
 
+    def _send(self, stdin, mode: str, items: list[bytes], rows: int, cols: int, limits: Limits, cache: bool,
+              ahead: bool):
+        """Write the items in chunks, in a thread of their own: the worker finds its next chunk
+        waiting when it finishes one, and a full pipe never blocks the reading of answers."""
+        try:
+            for k in range(0, len(items), CHUNK):
+                chunk = items[k:k + CHUNK]
+                header = json.dumps({"limits": limits.as_list(), "rows": rows, "cols": cols, "cache": cache,
+                                     "mode": mode, "items": len(chunk), "ahead": ahead}).encode()
+                stdin.write(b"\n".join([header, *chunk]) + b"\n")
+                stdin.flush()
+        except (OSError, ValueError):
+            pass  # the worker died or was killed: the reader finds out and reports it
+
     def run(self, mode: str, items: list[bytes], rows: int, cols: int, limits: Limits, cache: bool) -> list:
         """One answer per item: the worker's answer line (bytes), or an Execution for an item
-        whose worker timed out or died."""
+        whose worker timed out or died (the rest then goes to a fresh worker)."""
         results: list = []
+        ahead = True  # the worker compiles each chunk ahead (see worker.py)
         while len(results) < len(items):
             todo = items[len(results):]
             try:
                 if self.proc is None:
                     self.start()
-                header = json.dumps({"limits": limits.as_list(), "rows": rows, "cols": cols, "cache": cache,
-                                     "mode": mode, "items": len(todo)}).encode()
-                self.proc.stdin.write(b"\n".join([header, *todo]) + b"\n")
-                self.proc.stdin.flush()
             except (_Dead, OSError, ValueError) as exc:
                 self.kill()
                 results.extend(_failed(E.RUNTIME_ERROR, f"sandbox unavailable: {exc}") for _ in todo)
                 break
+            writer = threading.Thread(target=self._send, daemon=True,
+                                      args=(self.proc.stdin, mode, todo, rows, cols, limits, cache, ahead))
+            writer.start()
+            started = time.monotonic()
             for k in range(len(todo)):
-                if k and not self.lines and len(todo) - k > PATIENT_UNTIL:
-                    time.sleep(PATIENCE)  # let answers pile up: one wake-up reads many
+                if k and not self.lines:  # let answers pile up: one wake-up reads many
+                    rest = (len(todo) - k) * (time.monotonic() - started) / k
+                    if rest > 0.002:
+                        time.sleep(min(PATIENCE, rest / 2))
                 try:
                     line = self._readline(time.monotonic() + limits.wall_time)
+                    failure = None if line is not None else _failed(
+                        E.TIMEOUT, f"the program ran longer than {limits.wall_time:g} s")
                 except (_Dead, OSError):
-                    results.append(_died(self.kill()))
-                    break
-                if line is None:
-                    self.kill()
-                    results.append(_failed(E.TIMEOUT, f"the program ran longer than {limits.wall_time:g} s"))
-                    break
-                results.append(line)
+                    line, failure = None, _died(self.kill())
+                if line is not None:
+                    results.append(line)
+                    continue
+                self.kill()
+                if ahead and k % CHUNK == 0 and len(todo) - k > 1:
+                    # no answer yet of a chunk the worker compiled ahead: any of its programs may
+                    # be at fault, so the rest runs again, each compiled at its own turn
+                    ahead = False
+                else:
+                    results.append(failure)
+                break
+            writer.join()  # done, or unblocked by the kill (a closed pipe)
         return results
 
 
@@ -189,22 +226,29 @@ def default_workers() -> int:
     return max(1, min(2, os.cpu_count() or 1))
 
 
-def dispatch(mode: str, items: list[bytes], keys: list, rows: int, cols: int, limits: Limits,
+def dispatch(mode: str, items: list[bytes], keys: list | None, rows: int, cols: int, limits: Limits,
              workers: int | None = None, cache: bool = True) -> list:
     """Run items on the workers; answers in input order (see _Worker.run). Items with equal
-    keys go to the same worker, so its code cache sees every repeat of a source."""
+    keys go to the same worker, so its code cache sees every repeat of a source; without keys
+    (no cache to serve) the shares are balanced by size, since a program's cost grows with its
+    text (parsing and compiling are most of it), so that no worker waits idle for the other."""
     results: list = [None] * len(items)
     n = max(1, min(workers or default_workers(), -(-len(items) // BATCH)))
     shares: list[list[int]] = [[] for _ in range(n)]
-    for i, key in enumerate(keys):
-        shares[hash(key) % n].append(i)
+    if keys is None:
+        load = [0] * n
+        for i, item in enumerate(items):
+            w = load.index(min(load))
+            shares[w].append(i)
+            load[w] += len(item)
+    else:
+        for i, key in enumerate(keys):
+            shares[hash(key) % n].append(i)
 
     def drive(worker: _Worker, share: list[int]):
         with worker.lock:
-            for k in range(0, len(share), CHUNK):
-                chunk = share[k:k + CHUNK]
-                for i, answer in zip(chunk, worker.run(mode, [items[i] for i in chunk], rows, cols, limits, cache)):
-                    results[i] = answer
+            for i, answer in zip(share, worker.run(mode, [items[i] for i in share], rows, cols, limits, cache)):
+                results[i] = answer
 
     pool = _get_workers(n)
     if n == 1:
@@ -236,7 +280,8 @@ def execute_many(programs, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, l
             else:
                 results[i] = _failed(E.TYPE_ERROR, f"the program must be a str, not {type(p).__name__}")
         items = [json.dumps(programs[i]).encode() for i in todo]
-        answers = dispatch("code", items, [programs[i] for i in todo], rows, cols, limits, workers, cache)
+        keys = [programs[i] for i in todo] if cache else None
+        answers = dispatch("code", items, keys, rows, cols, limits, workers, cache)
         for i, answer in zip(todo, answers):
             results[i] = _decode(answer) if type(answer) is bytes else answer
         return [r if r is not None else _failed(E.RUNTIME_ERROR, "the sandbox returned no result") for r in results]

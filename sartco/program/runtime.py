@@ -196,8 +196,13 @@ BUILTINS = {
 _cache: dict[str, tuple] = {}
 
 
-def compile_program(source: str, cache: bool = True) -> tuple:
-    """(code object, None, "") or (None, error code, message)."""
+def compile_program(source: str, limits, cache: bool = True) -> tuple:
+    """(code object, None, "") or (None, error code, message): the source's type and size
+    checked, then parsed, checked, instrumented and compiled (see check.py)."""
+    if type(source) is not str:
+        return (None, E.TYPE_ERROR, f"the program must be a str, not {type(source).__name__}")
+    if len(source) > limits.source:
+        return (None, E.RESOURCE_LIMIT, f"the program has {len(source)} characters; the limit is {limits.source}")
     hit = _cache.get(source) if cache else None
     if hit is not None:
         return hit
@@ -271,14 +276,11 @@ def _depth() -> int:
     return n
 
 
-def run(source: str, rows: int, cols: int, limits, cache: bool = True) -> list:
-    """Run one program; return [ok, code or None, message, cells, puts]."""
+def run(source: str, rows: int, cols: int, limits, cache: bool = True, compiled: tuple | None = None) -> list:
+    """Run one program; return [ok, code or None, message, cells, puts]. `compiled` is what
+    compile_program gave for this source, if it was compiled ahead."""
     global LENGTH, INT_BITS
-    if type(source) is not str:
-        return [False, E.TYPE_ERROR, f"the program must be a str, not {type(source).__name__}", {}, 0]
-    if len(source) > limits.source:
-        return [False, E.RESOURCE_LIMIT, f"the program has {len(source)} characters; the limit is {limits.source}", {}, 0]
-    code, error, message = compile_program(source, cache)
+    code, error, message = compile_program(source, limits, cache) if compiled is None else compiled
     try:
         board = Board(rows, cols)
     except WorldError as exc:

