@@ -261,11 +261,8 @@ def _is_list_field(t: type, field: str) -> bool:
     } or (field == "args" and t in (A.Call, A.arguments))
 
 
-# per allowed node type: (rule or None, fields holding one node or None, fields holding lists)
-PLAN: dict[type, tuple] = {
-    t: (RULES.get(t), tuple(f for f in fs if not _is_list_field(t, f)), tuple(f for f in fs if _is_list_field(t, f)))
-    for t, fs in FIELDS.items()
-}
+# per allowed node type: (rule or None, ((field, whether it holds a list of nodes), ...))
+PLAN: dict[type, tuple] = {t: (RULES.get(t), tuple((f, _is_list_field(t, f)) for f in fs)) for t, fs in FIELDS.items()}
 
 
 def instrument(tree: ast.Module) -> ast.Module:
@@ -281,12 +278,6 @@ def instrument(tree: ast.Module) -> ast.Module:
     seen_loads: set[str] = set()  # names already checked in a load context
     offences: list[Forbidden] = []
     plan_of, wrap_of, name_type, const_type, load_type = PLAN.get, WRAPS.get, ast.Name, ast.Constant, ast.Load
-
-    def visit(child):
-        """Check a child that is neither a constant nor a name; return what to visit (the child,
-        or its wrapped form when a growth check applies)."""
-        wrap = wrap_of(type(child))
-        return child if wrap is None else wrap(child, wrapped)
 
     def check_name(child):
         if type(child.ctx) is not load_type:
@@ -304,25 +295,12 @@ def instrument(tree: ast.Module) -> ast.Module:
             plan = plan_of(t)
             if plan is None:
                 _fail(node, f"{WHAT.get(t) or t.__name__} is not allowed")
-            rule, singles, lists = plan
+            rule, fields = plan
             if rule is not None:
                 rule(node)
-            for field in singles:
-                child = getattr(node, field)
-                ct = type(child)
-                if ct is const_type or child is None:
-                    continue
-                if ct is name_type:
-                    if type(child.ctx) is not load_type or child.id not in seen_loads:
-                        check_name(child)
-                    continue
-                new = visit(child)
-                if new is not child:
-                    setattr(node, field, new)
-                push(new)
-            for field in lists:
+            for field, many in fields:
                 value = getattr(node, field)
-                for child in value:
+                for child in value if many else (value,):
                     ct = type(child)
                     if ct is const_type or child is None:
                         continue
@@ -330,10 +308,16 @@ def instrument(tree: ast.Module) -> ast.Module:
                         if type(child.ctx) is not load_type or child.id not in seen_loads:
                             check_name(child)
                         continue
-                    new = visit(child)
-                    if new is not child:
-                        value[value.index(child)] = new  # nodes compare by identity
-                    push(new)
+                    wrap = wrap_of(ct)
+                    if wrap is not None:
+                        new = wrap(child, wrapped)
+                        if new is not child:
+                            if many:
+                                value[value.index(child)] = new  # nodes compare by identity
+                            else:
+                                setattr(node, field, new)
+                            child = new
+                    push(child)
         except Forbidden as exc:
             offences.append(exc)
     if offences:
