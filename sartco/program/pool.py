@@ -46,6 +46,7 @@ PATIENCE = 0.01  # most seconds to wait before reading more answers of a running
 # nears, the waits shrink to half the estimated rest, so the last answers are read as they come
 START_TIMEOUT = 30.0
 PIPE_SIZE = 1 << 20  # bytes of answers a worker can write ahead of the parent
+READ_SIZE = 1 << 16  # bytes per read (a read allocates its whole size first)
 _ROOT = str(Path(__file__).resolve().parents[2])
 _BOOT = (
     "import sys; sys.path.insert(0, sys.argv[1]); "
@@ -63,6 +64,7 @@ class _Worker:
         self.lines: deque[bytes] = deque()
         self.tail = b""
         self.lock = threading.Lock()
+        self.room = 4096  # bytes the worker's stdin pipe holds
 
     # -- process ---------------------------------------------------------------------------
     def start(self):
@@ -76,6 +78,10 @@ class _Worker:
                 fcntl.fcntl(pipe.fileno(), fcntl.F_SETPIPE_SZ, PIPE_SIZE)
             except (AttributeError, OSError):
                 pass
+        try:
+            self.room = fcntl.fcntl(self.proc.stdin.fileno(), fcntl.F_GETPIPE_SZ)
+        except (AttributeError, OSError):
+            self.room = 4096  # POSIX guarantees at least PIPE_BUF
         self.lines.clear()
         self.tail = b""
         if self._readline(time.monotonic() + START_TIMEOUT) != b'"ready"':
@@ -105,7 +111,7 @@ class _Worker:
             remaining = deadline - time.monotonic()
             if remaining <= 0 or not select.select([fd], [], [], remaining)[0]:
                 return None
-            chunk = os.read(fd, PIPE_SIZE)  # all that piled up
+            chunk = os.read(fd, READ_SIZE)
             if not chunk:
                 raise _Dead("the sandbox worker ended")
             parts = (self.tail + chunk).split(b"\n")
@@ -141,12 +147,17 @@ class _Worker:
                 self.kill()
                 results.extend(_failed(E.RUNTIME_ERROR, f"sandbox unavailable: {exc}") for _ in todo)
                 break
-            writer = threading.Thread(target=self._send, daemon=True,
-                                      args=(self.proc.stdin, mode, todo, rows, cols, limits, cache, ahead))
-            writer.start()
+            send = (self.proc.stdin, mode, todo, rows, cols, limits, cache, ahead)
+            writer = None
+            if len(todo) <= CHUNK and sum(map(len, todo)) + 4096 < self.room:
+                self._send(*send)  # one chunk that fits in the empty pipe: the write cannot block
+            else:
+                writer = threading.Thread(target=self._send, args=send, daemon=True)
+                writer.start()
             started = time.monotonic()
             for k in range(len(todo)):
-                if k and not self.lines:  # let answers pile up: one wake-up reads many
+                if k and not self.lines and not select.select([self.proc.stdout], [], [], 0)[0]:
+                    # nothing to read: let answers pile up, so that one wake-up reads many
                     rest = (len(todo) - k) * (time.monotonic() - started) / k
                     if rest > 0.002:
                         time.sleep(min(PATIENCE, rest / 2))
@@ -167,7 +178,8 @@ class _Worker:
                 else:
                     results.append(failure)
                 break
-            writer.join()  # done, or unblocked by the kill (a closed pipe)
+            if writer is not None:
+                writer.join()  # done, or unblocked by the kill (a closed pipe)
         return results
 
 

@@ -8,11 +8,20 @@ from .errors import ErrorCode, WorldError
 
 Cells = dict[str, list[list[str]]]
 MAX_SIDE = 64
-_KEYS = tuple(tuple(f"{r}:{c}" for c in range(MAX_SIDE)) for r in range(MAX_SIDE))  # "row:col", made once
+_KEYS: dict[int, tuple[str, ...]] = {}  # cols -> the "row:col" keys in row-major order, made once per width
+
+
+def _keys(cols: int) -> tuple[str, ...]:
+    keys = _KEYS.get(cols)
+    if keys is None:
+        keys = _KEYS[cols] = tuple(f"{r}:{c}" for r in range(MAX_SIDE) for c in range(cols))
+    return keys
 
 
 class Board:
-    """A rows x cols grid of stacks. A bridge is listed in both of its cells."""
+    """A rows x cols grid of stacks, kept row-major in one flat list (cell (x, y) is
+    stacks[x * cols + y]: one list to make per board, not one per row). A bridge is listed in
+    both of its cells."""
 
     __slots__ = ("rows", "cols", "stacks", "puts")
 
@@ -21,7 +30,7 @@ class Board:
             _bad_size(rows, cols)
         self.rows = rows
         self.cols = cols
-        self.stacks: list[list[list[tuple[str, str]]]] = [[[] for _ in range(cols)] for _ in range(rows)]
+        self.stacks: list[list[tuple[str, str]]] = [[] for _ in range(rows * cols)]
         self.puts = 0
 
     def __repr__(self) -> str:
@@ -29,18 +38,15 @@ class Board:
 
     def cells(self) -> Cells:
         """The canonical form, keys in row-major order, empty cells left out."""
-        return {
-            key: [*map(list, stack)]
-            for keys, row in zip(_KEYS, self.stacks) if any(row)
-            for key, stack in compress(zip(keys, row), row)
-        }
+        stacks = self.stacks
+        return {key: [*map(list, stack)] for key, stack in compress(zip(_keys(self.cols), stacks), stacks)}
 
     @classmethod
     def from_cells(cls, cells: Cells, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS) -> "Board":
         board = cls(rows, cols)
         for key, stack in cells.items():
             r, c = parse_key(key)
-            board.stacks[r][c] = [(shape, color) for shape, color in stack]
+            board.stacks[r * cols + c] = [(shape, color) for shape, color in stack]
         return board
 
 

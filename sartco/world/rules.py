@@ -30,15 +30,16 @@ def _bad_coordinates(x, y):
             _fail(E.TYPE_ERROR, f"{name} must be an integer, got {type(value).__name__} {value!r:.40}")
 
 
-def check(board: Board, shape, color, x, y) -> tuple[int, int] | None:
-    """Raise the first rule a placement violates; return a bridge's second cell (None for a
-    piece that covers only (x, y)). Written for speed: it runs for every put of every program."""
+def check(board: Board, shape, color, x, y) -> int | None:
+    """Raise the first rule a placement violates; return the index in board.stacks of a
+    bridge's second cell (None for a piece that covers only (x, y)). Written for speed: it runs
+    for every put of every program."""
     if type(x) is not int or type(y) is not int:
         _bad_coordinates(x, y)
     if not (0 <= x < board.rows and 0 <= y < board.cols):
         _fail(E.DIMENSIONS_MISMATCH, f"({x}, {y}) is outside the {board.rows}x{board.cols} board")
-    stacks = board.stacks
-    anchor = stacks[x][y]
+    stacks, cols = board.stacks, board.cols
+    anchor = stacks[x * cols + y]
     height = len(anchor)
     if height >= MAX_DEPTH:
         _fail(E.VALUE_ERROR, f"cell ({x}, {y}) is full ({MAX_DEPTH} pieces)")
@@ -50,15 +51,15 @@ def check(board: Board, shape, color, x, y) -> tuple[int, int] | None:
             _fail(E.VALUE_ERROR, f"{shape} at ({x}, {y}) needs cell ({x2}, {y2}), which is off the board")
         if height >= 2:
             _fail(E.BRIDGE_PLACEMENT, f"{shape} at ({x}, {y}) would sit at level {height + 1}; bridges go on level 1 or 2")
-        if len(stacks[x2][y2]) != height:
-            _fail(E.DEPTH_MISMATCH, f"{shape} at ({x}, {y}) spans cells of heights {height} and {len(stacks[x2][y2])}")
-        second = (x2, y2)
+        second = x2 * cols + y2
+        if len(stacks[second]) != height:
+            _fail(E.DEPTH_MISMATCH, f"{shape} at ({x}, {y}) spans cells of heights {height} and {len(stacks[second])}")
     if height:
         top = anchor[-1][0]
         if top in NOTHING_ON_TOP:
             _fail(E.NOT_ON_TOP_OF_SCREW, f"cell ({x}, {y}) has a {top} on top; nothing goes on a screw")
-        if second is not None and stacks[x2][y2][-1][0] in NOTHING_ON_TOP:
-            _fail(E.NOT_ON_TOP_OF_SCREW, f"cell ({x2}, {y2}) has a {stacks[x2][y2][-1][0]} on top; nothing goes on a screw")
+        if second is not None and stacks[second][-1][0] in NOTHING_ON_TOP:
+            _fail(E.NOT_ON_TOP_OF_SCREW, f"cell ({x2}, {y2}) has a {stacks[second][-1][0]} on top; nothing goes on a screw")
         if top == shape:
             _fail(E.SAME_SHAPE_STACKING, f"{shape} directly on a {shape} at ({x}, {y})")
         if height >= 2 and anchor[-2][0] == shape:
@@ -76,8 +77,9 @@ def put(board: Board, shape, color, x, y) -> Board:
         _fail(E.TYPE_ERROR, f"put: the first argument must be a board, got {type(board).__name__}")
     second = check(board, shape, color, x, y)
     piece = (shape, color)
-    board.stacks[x][y].append(piece)
+    stacks = board.stacks
+    stacks[x * board.cols + y].append(piece)
     if second is not None:
-        board.stacks[second[0]][second[1]].append(piece)
+        stacks[second].append(piece)
     board.puts += 1
     return board
