@@ -18,7 +18,9 @@ class Limits:
     length      longest range / list / tuple / str / bytes a checked operation may create
     int_bits    largest integer (in bits) that `*`, `**` and `<<` may create
     wall_time   seconds per program, enforced by killing the worker process (catches loops
-                inside C code that no Python-level counter sees)
+                inside C code that no Python-level counter sees); in a batch, the first
+                program of each chunk shares it with compiling the chunk ahead (at most a
+                tenth of it; a kill there reruns the chunk program by program, see pool.py)
     memory      bytes of address space the worker may add (RLIMIT_AS)
     source      characters of source text
     """
