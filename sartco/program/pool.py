@@ -121,8 +121,9 @@ class _Worker:
 
     def _send(self, stdin, mode: str, items: list[bytes], rows: int, cols: int, limits: Limits, cache: bool,
               ahead: bool):
-        """Write the items in chunks, in a thread of their own: the worker finds its next chunk
-        waiting when it finishes one, and a full pipe never blocks the reading of answers."""
+        """Write the items in chunks. For more than fits in the pipe at once this runs in a thread
+        of its own: the worker finds its next chunk waiting when it finishes one, and a full pipe
+        never blocks the reading of answers."""
         try:
             for k in range(0, len(items), CHUNK):
                 chunk = items[k:k + CHUNK]
