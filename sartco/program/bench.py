@@ -41,7 +41,7 @@ from .pool import default_workers, execute_many, shutdown
 def configure(parser) -> None:
     parser.add_argument("--data", type=Path, default=DEFAULT_DATA, help="the sartco-data folder (default: %(default)s)")
     parser.add_argument("--workers", type=int, default=None, help="worker processes (default min(2, CPUs))")
-    parser.add_argument("--repeat", type=int, default=3,
+    parser.add_argument("--repeat", type=int, default=5,
                         help="runs per mode (default %(default)s); the best run of each side is compared")
 
 
