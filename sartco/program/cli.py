@@ -8,7 +8,6 @@ an interactive caller gets each answer as soon as its line arrives.
 """
 from __future__ import annotations
 
-import json
 import os
 import queue
 import select
@@ -19,7 +18,7 @@ from sartco.cli import UserError
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, ErrorCode
 from sartco.world.board import MAX_SIDE
 
-from .lines import answer, malformed, parse_line
+from .lines import finish, parse_line
 from .pool import dispatch
 from .records import Execution, Limits
 
@@ -112,10 +111,9 @@ def _answers(lines, rows, cols, limits, workers, cache) -> bytes:
     for (number, raw), ans in zip(lines, answers):
         if type(ans) is bytes:
             text.append(ans)
-        else:  # timeout or dead worker: answer here
-            ident, code, target, problem = parse_line(number, raw)
-            row = malformed(ident, problem) if problem else answer(ident, ans.ok, ans.error, ans.message, ans.cells, target)
-            text.append(json.dumps(row).encode())
+        else:  # timeout or dead worker: answer here, as the worker would have
+            parsed = parse_line(number, raw, check_target=False)
+            text.append(finish(number, parsed, lambda ans=ans: (ans.ok, ans.error, ans.message, ans.cells)).encode())
     return b"\n".join(text) + b"\n"
 
 

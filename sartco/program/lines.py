@@ -83,11 +83,11 @@ def malformed(ident, problem: str) -> dict:
 
 def finish(number: int, parsed: tuple, run) -> str:
     """The output line (JSON text) for one input line, given what parse_line(number, raw,
-    check_target=False) made of it; `run(code)` -> (ok, error, message, cells)."""
-    ident, code, target, problem = parsed
+    check_target=False) made of it; `run()` runs its code -> (ok, error, message, cells)."""
+    ident, _, target, problem = parsed
     if problem is not None:
         return encode(malformed(ident, problem))
-    ok, error, message, cells = run(code)
+    ok, error, message, cells = run()
     # the target's cells are checked only when they differ from the built board's: equal to
     # well-formed cells, they are well-formed (the common case, and a third of the JSON work).
     # A malformed target so costs a run, but answers the same malformed line.

@@ -276,11 +276,11 @@ def _depth() -> int:
     return n
 
 
-def run(source: str, rows: int, cols: int, limits, cache: bool = True, compiled: tuple | None = None) -> list:
-    """Run one program; return [ok, code or None, message, cells, puts]. `compiled` is what
-    compile_program gave for this source, if it was compiled ahead."""
+def run(compiled: tuple, rows: int, cols: int, limits) -> list:
+    """Run one program, given what compile_program made of it; return [ok, code or None,
+    message, cells, puts]."""
     global LENGTH, INT_BITS
-    code, error, message = compile_program(source, limits, cache) if compiled is None else compiled
+    code, error, message = compiled
     try:
         board = Board(rows, cols)
     except WorldError as exc:

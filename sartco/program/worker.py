@@ -78,17 +78,18 @@ def main() -> int:
                 source = json.loads(item)
                 return source, compile_program(source, limits, cache)
             number, _, raw = item.partition(b" ")
-            parsed = parse_line(int(number), raw, check_target=False)
-            return (int(number), parsed), None if parsed[1] is None else compile_program(parsed[1], limits, cache)
+            number = int(number)
+            parsed = parse_line(number, raw, check_target=False)
+            return (number, parsed), None if parsed[1] is None else compile_program(parsed[1], limits, cache)
 
         def answer(job: tuple) -> str:
             given, compiled = job
             if mode == "code":
-                return encode(run(given, rows, cols, limits, cache, compiled))
-            return finish(*given, lambda code: run(code, rows, cols, limits, cache, compiled)[:4])
+                return encode(run(compiled, rows, cols, limits))
+            return finish(*given, lambda: run(compiled, rows, cols, limits)[:4])
 
-        # read the whole batch before answering: the parent writes it in one go, and answering
-        # while it still writes could fill both pipes (deadlock)
+        # read the whole batch before answering: its programs are compiled ahead, and the parent
+        # may still be writing the next one
         items = [inp.readline().rstrip(b"\n") for _ in range(request["items"])]
         jobs: list = []
         try:
