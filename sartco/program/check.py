@@ -49,7 +49,6 @@ TYPE_METHODS = {  # the methods a program may call, per type (checked again at r
 METHODS = frozenset().union(*TYPE_METHODS.values())
 CHECKED_OPS = {ast.Add: "$add", ast.Mult: "$mul", ast.Pow: "$pow", ast.LShift: "$lshift", ast.Mod: "$mod"}
 INPLACE_OPS = {ast.Add: "$iadd", ast.Mult: "$imul", ast.Pow: "$ipow", ast.LShift: "$ilshift", ast.Mod: "$imod"}
-OP_SYMBOLS = {ast.Add: "+", ast.Mult: "*", ast.Pow: "**", ast.LShift: "<<", ast.Mod: "%"}
 
 # the fields of each allowed node type that hold child nodes; a type not listed is forbidden
 A = ast
@@ -127,10 +126,6 @@ def _tick(old) -> ast.Expr:
 
 # --- rules: checks (and in-place instrumentation) of a node itself ---------------------------
 
-def _r_name(n):
-    _name(n, n.id, type(n.ctx) is not ast.Load)
-
-
 def _r_arg(n):
     _name(n, n.arg, True)
 
@@ -174,7 +169,7 @@ def _r_formatted(n):
 
 
 RULES = {
-    A.Name: _r_name, A.arg: _r_arg, A.keyword: _r_keyword, A.FunctionDef: _r_function,
+    A.arg: _r_arg, A.keyword: _r_keyword, A.FunctionDef: _r_function,
     A.For: _r_loop, A.While: _r_loop, A.Lambda: _r_lambda, A.comprehension: _r_comprehension,
     A.FormattedValue: _r_formatted,
 }
@@ -224,7 +219,7 @@ def _w_augassign(n, wrapped):
         if type(key) is ast.Slice:
             none = _loc(ast.Constant(None), key)
             key = _call("$slice", [key.lower or none, key.upper or none, key.step or none], key)
-        args = [target.value, key, _loc(ast.Constant(OP_SYMBOLS[op]), n), n.value]
+        args = [target.value, key, _loc(ast.Name(helper, ast.Load()), n), n.value]
         return _loc(ast.Expr(_call("$iitem", args, n)), n)
     _fail(n, "augmented assignment to this target is not allowed")
 
@@ -279,15 +274,6 @@ def instrument(tree: ast.Module) -> ast.Module:
     offences: list[Forbidden] = []
     plan_of, wrap_of, name_type, const_type, load_type = PLAN.get, WRAPS.get, ast.Name, ast.Constant, ast.Load
 
-    def check_name(child):
-        if type(child.ctx) is not load_type:
-            _name(child, child.id, True)
-        elif child.id not in seen_loads:
-            _name(child, child.id, False)
-            seen_loads.add(child.id)
-
-    # leaves (constants, names) are handled where they are met, without a call for a constant
-    # or a name already seen, because they make up two thirds of a typical tree
     while todo:
         node = pop()
         try:
@@ -305,8 +291,11 @@ def instrument(tree: ast.Module) -> ast.Module:
                     if ct is const_type or child is None:
                         continue
                     if ct is name_type:
-                        if type(child.ctx) is not load_type or child.id not in seen_loads:
-                            check_name(child)
+                        if type(child.ctx) is not load_type:
+                            _name(child, child.id, True)
+                        elif child.id not in seen_loads:
+                            _name(child, child.id, False)
+                            seen_loads.add(child.id)
                         continue
                     wrap = wrap_of(ct)
                     if wrap is not None:

@@ -118,11 +118,9 @@ def _imul(a, b):
     return a
 
 
-INPLACE = {"+": _iadd, "*": _imul, "**": _pow, "<<": _lshift, "%": _mod}
-
-
 def _iitem(obj, key, op, value):
-    obj[key] = INPLACE[op](obj[key], value)
+    """obj[key] op= value, `op` being one of the checked in-place helpers ($iadd, ...)."""
+    obj[key] = op(obj[key], value)
 
 
 def _len(s):
