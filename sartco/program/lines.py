@@ -18,11 +18,11 @@ import json
 import re
 
 from sartco.world import ErrorCode
+from sartco.world.board import KEY
 
 from .compare import compare
 
-KEY = re.compile(r"\d+:\d+")
-KEYS = re.compile(r"\d+:\d+(?:,\d+:\d+)*")
+KEYS = re.compile(rf"{KEY.pattern}(?:,{KEY.pattern})*")  # keys joined by commas
 # the output holds only fresh dicts, lists and strings (no cycles): skip the encoder's cycle check
 encode = json.JSONEncoder(check_circular=False).encode
 

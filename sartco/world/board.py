@@ -1,6 +1,7 @@
 """The board and its one canonical form: {"row:col": [[shape, color], ...]} bottom to top."""
 from __future__ import annotations
 
+import re
 from itertools import compress
 
 from .components import DEFAULT_COLS, DEFAULT_ROWS
@@ -8,6 +9,7 @@ from .errors import ErrorCode, WorldError
 
 Cells = dict[str, list[list[str]]]
 MAX_SIDE = 64
+KEY = re.compile(r"\d+:\d+")  # a cell key, "row:col", as the canonical form writes it
 _KEYS: dict[int, tuple[str, ...]] = {}  # cols -> the "row:col" keys in row-major order, made once per width
 
 

@@ -9,7 +9,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from sartco.program import Execution, Limits, execute
-from sartco.world import COLORS, SHAPES, Board, ErrorCode, WorldError, put
+from sartco.world import COLORS, MAX_DEPTH, SHAPES, Board, ErrorCode, WorldError, parse_key, put
+from sartco.world.board import KEY, MAX_SIDE
 
 LIMITS = Limits(steps=20_000, wall_time=20.0)
 SETTINGS = settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -21,8 +22,9 @@ def _assert_result(ex):
     assert isinstance(ex.message, str) and type(ex.puts) is int
     assert type(ex.cells) is dict
     for key, stack in ex.cells.items():
-        r, c = map(int, key.split(":"))
-        assert 0 <= r < 64 and 0 <= c < 64 and 1 <= len(stack) <= 4
+        assert KEY.fullmatch(key)
+        r, c = parse_key(key)
+        assert 0 <= r < MAX_SIDE and 0 <= c < MAX_SIDE and 1 <= len(stack) <= MAX_DEPTH
         assert all(s in SHAPES and col in COLORS for s, col in stack)
 
 
