@@ -36,7 +36,7 @@ from pathlib import Path
 
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, Board, ErrorCode, WorldError
 
-from .records import Execution, Limits
+from .records import Execution, Limits, not_a_str
 
 E = ErrorCode
 BATCH = 32  # a call with fewer items than this uses one worker
@@ -291,7 +291,7 @@ def execute_many(programs, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, l
             if type(p) is str:
                 todo.append(i)
             else:
-                results[i] = _failed(E.TYPE_ERROR, f"the program must be a str, not {type(p).__name__}")
+                results[i] = _failed(E.TYPE_ERROR, not_a_str(p))
         items = [json.dumps(programs[i]).encode() for i in todo]
         keys = [programs[i] for i in todo] if cache else None
         answers = dispatch("code", items, keys, rows, cols, limits, workers, cache)

@@ -58,3 +58,8 @@ class Comparison:
     precision: float
     recall: float
     f1: float
+
+
+def not_a_str(program) -> str:
+    """What is wrong with a program that is not a str (said by the parent and the worker alike)."""
+    return f"the program must be a str, not {type(program).__name__}"

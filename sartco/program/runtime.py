@@ -24,6 +24,7 @@ from operator import length_hint
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, Board, ErrorCode, WorldError, put
 
 from .check import TYPE_METHODS, Forbidden, prepare
+from .records import not_a_str
 
 E = ErrorCode
 INTS = (int, bool)
@@ -198,7 +199,7 @@ def compile_program(source: str, limits, cache: bool = True) -> tuple:
     """(code object, None, "") or (None, error code, message): the source's type and size
     checked, then parsed, checked, instrumented and compiled (see check.py)."""
     if type(source) is not str:
-        return (None, E.TYPE_ERROR, f"the program must be a str, not {type(source).__name__}")
+        return (None, E.TYPE_ERROR, not_a_str(source))
     if len(source) > limits.source:
         return (None, E.RESOURCE_LIMIT, f"the program has {len(source)} characters; the limit is {limits.source}")
     hit = _cache.get(source) if cache else None
