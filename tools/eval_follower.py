@@ -20,9 +20,8 @@ from pathlib import Path
 
 from sartco.follower import FollowError, follow
 from sartco.program import compare, execute_many
-
-REPO = Path(__file__).resolve().parents[1]
-DEFAULT_DATA = REPO.parent / "shared" / "sartco-data"
+from sartco.program.gold import DEFAULT_DATA, base_of, samples
+from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
 
 # dialogue key -> (task, source); multi_turn is the first-order task, one instruction per turn
 SIMPLE_VARIANTS = {
@@ -37,33 +36,18 @@ REGULAR_VARIANTS = {"regular": ("repetition", "template"), "regular_hai": ("repe
                     "regular_mg": ("repetition", "model")}
 
 
-def samples(doc):
-    for board_type, by_object in doc.items():
-        for object_type, by_count in by_object.items():
-            for count, by_combo in by_count.items():
-                for combo, items in by_combo.items():
-                    for index, sample in enumerate(items):
-                        yield f"{board_type}/{object_type}/{count}/{combo}/{index}", sample
-
-
-def base_file(name: str) -> str:
-    for suffix in ("_hc", "_gpt4_mg", "_claude_mg", "_mg"):
-        if name.endswith(suffix):
-            return name[: -len(suffix)]
-    return name
-
-
 def evaluate(data: Path = DEFAULT_DATA, files: list[str] | None = None):
     """{(file, variant): {"n", "es", "parsed", "failures": [...]}} over the published files."""
     results: dict[tuple[str, str], dict] = {}
     pending = []  # (result row, sample id, texts, program, gold board), run in one batch
+    gold_stems = sorted(p.stem for p in (data / "gold_boards").glob("*.json"))
     for path in sorted((data / "published").glob("*.json")):
         name = path.stem
         if files and name not in files:
             continue
-        gold = json.loads((data / "gold_boards" / f"{base_file(name)}.json").read_text())
+        gold = json.loads((data / "gold_boards" / f"{base_of(name, gold_stems) or name}.json").read_text())
         doc = json.loads(path.read_text())
-        for sid, sample in samples(doc):
+        for _, sid, sample in samples(doc):
             regular = "occupied_rows" in sample
             variants = REGULAR_VARIANTS if regular else SIMPLE_VARIANTS
             for variant, dialogue in sample["dialogues"].items():
@@ -81,9 +65,10 @@ def evaluate(data: Path = DEFAULT_DATA, files: list[str] | None = None):
                     r["failures"].append((sid, "parse", str(exc), texts))
                     continue
                 r["parsed"] += 1
-                program = (context + "\n" if regular else "") + "board = init_board(8, 8)\n" + code
+                program = ((context + "\n" if regular else "")
+                           + f"board = init_board({DEFAULT_ROWS}, {DEFAULT_COLS})\n" + code)
                 pending.append((r, sid, texts, program, gold[sid]))
-    outcomes = execute_many([program for *_, program, _ in pending], rows=8, cols=8)
+    outcomes = execute_many([program for *_, program, _ in pending], rows=DEFAULT_ROWS, cols=DEFAULT_COLS)
     for (r, sid, texts, _, target), ex in zip(pending, outcomes):
         if ex.ok and compare(ex.cells, target).es:
             r["es"] += 1

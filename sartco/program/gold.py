@@ -18,6 +18,8 @@ import json
 from pathlib import Path
 from typing import Iterator, NamedTuple
 
+from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
+
 DEFAULT_DATA = Path(__file__).resolve().parents[2].parent / "shared" / "sartco-data"
 
 
@@ -34,6 +36,16 @@ def base_of(stem: str, gold_stems) -> str | None:
     return max(matches, key=len) if matches else None
 
 
+def samples(content: dict) -> Iterator[tuple[str, str, dict]]:
+    """(board type, sample id, sample) of one published file's content, in file order."""
+    for board_type, by_object in content.items():
+        for object_type, by_count in by_object.items():
+            for count, by_combo in by_count.items():
+                for combo, items in by_combo.items():
+                    for index, sample in enumerate(items):
+                        yield board_type, f"{board_type}/{object_type}/{count}/{combo}/{index}", sample
+
+
 def gold_programs(data: Path = DEFAULT_DATA) -> Iterator[GoldProgram]:
     data = Path(data)
     gold_dir = data / "gold_boards"
@@ -44,16 +56,10 @@ def gold_programs(data: Path = DEFAULT_DATA) -> Iterator[GoldProgram]:
         if base is not None and base not in boards_cache:
             boards_cache[base] = json.loads((gold_dir / f"{base}.json").read_text())
         boards = boards_cache.get(base, {})
-        content = json.loads(path.read_text())
-        for board_type, by_object in content.items():
-            for object_type, by_count in by_object.items():
-                for count, by_combo in by_count.items():
-                    for combo, samples in by_combo.items():
-                        for index, sample in enumerate(samples):
-                            sid = f"{board_type}/{object_type}/{count}/{combo}/{index}"
-                            target = boards.get(sid)
-                            for kind, code in _programs(board_type, sample):
-                                yield GoldProgram(path.stem, sid, kind, code, target)
+        for board_type, sid, sample in samples(json.loads(path.read_text())):
+            target = boards.get(sid)
+            for kind, code in _programs(board_type, sample):
+                yield GoldProgram(path.stem, sid, kind, code, target)
 
 
 def _programs(board_type: str, sample: dict):
@@ -66,7 +72,7 @@ def _programs(board_type: str, sample: dict):
     for name, dialogue in sample.get("dialogues", {}).items():
         editors = [turn["<Editor>"] for turn in dialogue["instructions"]]
         if editors and all(isinstance(e, str) for e in editors):
-            yield f"dialogue.{name}", "board = init_board(8, 8)\n" + "\n".join(editors)
+            yield f"dialogue.{name}", f"board = init_board({DEFAULT_ROWS}, {DEFAULT_COLS})\n" + "\n".join(editors)
         else:
             for j, editor in enumerate(editors):
                 yield f"dialogue.{name}.{j}", editor["total_code"]
