@@ -48,7 +48,7 @@ from typing import Any, Iterator
 
 from sartco.cli import UserError
 from sartco.program import execute_many
-from sartco.world import LETTERS
+from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, LETTERS, Cells
 
 from .config import SPLITS
 from .generate import FORMAT, dumps
@@ -78,8 +78,6 @@ VOCABULARY = frozenset(
 )
 TERMINAL_RE = re.compile(r"[.!?][\"')\]]*$")
 PREFIX_RE = re.compile(r"^(?:s:|s(?=\s+[A-Z])|:)\s*")
-
-Cells = dict[str, list[list[str]]]
 
 
 @dataclass(frozen=True, slots=True)
@@ -315,8 +313,8 @@ class Importer:
         shapes = _get(sample, "shapes", kind=list)
         colors = _get(sample, "colors", kind=list)
         dialogues = _get(sample, "dialogues", kind=dict)
-        rows = sample.get("rows", 8)
-        cols = sample.get("cols", 8)
+        rows = sample.get("rows", DEFAULT_ROWS)
+        cols = sample.get("cols", DEFAULT_COLS)
         if type(rows) is not int or type(cols) is not int:
             raise SampleError("fields 'rows' and 'cols' must be integers")
         quadrant = _get(sample, "quadrant")

@@ -72,7 +72,7 @@ def answer(record: dict, task: str) -> list[list[tuple[str, str]]]:
     return [(instruction_text(record, task), [("Function", code["function"]), ("Usage", code["usage"])])]
 
 
-def _environment(rows: int = 8, cols: int = 8) -> str:
+def _environment(rows: int, cols: int) -> str:
     return render("prompts/environment.j2", rows=rows, cols=cols, shapes=list(SHAPES),
                   colors=list(COLORS), max_depth=MAX_DEPTH)
 

@@ -4,17 +4,19 @@ from __future__ import annotations
 
 from typing import Any
 
+from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
+
 from .arrangements import arrangement, instruction, output_code
 from .objects import ObjectSpec, load_seed, place_target, seed_puts
 from .templates import render
 
-ROWS = COLS = 8
 ORIENTATION = {"bridge-h": "horizontal", "bridge-v": "vertical"}
 QUADRANT_ORIGIN = {"tl": (0, 0), "tr": (0, 4), "bl": (4, 0), "br": (4, 4)}
 
 
-def anchors_in_quadrant(obj: ObjectSpec, quadrant: str, rows: int = ROWS, cols: int = COLS) -> list[tuple[int, int]]:
+def anchors_in_quadrant(obj: ObjectSpec, quadrant: str) -> list[tuple[int, int]]:
     """Anchors inside the quadrant from which the whole object lies on the board."""
+    rows, cols = DEFAULT_ROWS, DEFAULT_COLS
     r0, c0 = QUADRANT_ORIGIN[quadrant]
     return [(x, y) for x in range(r0, r0 + rows // 2) for y in range(c0, c0 + cols // 2)
             if x + obj.rows <= rows and y + obj.cols <= cols]
@@ -26,7 +28,7 @@ def optimal_function(obj: ObjectSpec) -> str:
 
 
 def _program(function: str, usage: str) -> str:
-    return render("code/program.j2", function=function, usage=usage, rows=ROWS, cols=COLS).strip("\n")
+    return render("code/program.j2", function=function, usage=usage, rows=DEFAULT_ROWS, cols=DEFAULT_COLS).strip("\n")
 
 
 def simple_record(obj: ObjectSpec, colors, quadrant: str, x: int, y: int) -> dict[str, Any]:
@@ -43,14 +45,15 @@ def simple_record(obj: ObjectSpec, colors, quadrant: str, x: int, y: int) -> dic
     return {
         "board_type": "simple", "object_type": "simple",
         "combo_name": name, "shapes": list(obj.shapes), "colors": colors,
-        "quadrant": quadrant, "rows": ROWS, "cols": COLS,
+        "quadrant": quadrant, "rows": DEFAULT_ROWS, "cols": DEFAULT_COLS,
         "seed": obj.seed, "arrangement": None,
         "placement": {"x": xs, "y": ys, "orientations": [ORIENTATION.get(s) for s in obj.shapes]},
         "occupied_rows": None, "occupied_cols": None,
         "target": place_target(obj, colors, [(x, y)]),
         "code": {
             "first_order": {"steps": steps,
-                            "total_code": render("code/first_order.j2", steps=steps, rows=ROWS, cols=COLS).strip("\n")},
+                            "total_code": render("code/first_order.j2", steps=steps, rows=DEFAULT_ROWS,
+                                                 cols=DEFAULT_COLS).strip("\n")},
             "sequence_function": {"function": seq_function, "usage": seq_usage,
                                   "total_code": _program(seq_function, seq_usage)},
             "optimal_function": {"function": opt_function, "usage": opt_usage,
@@ -74,7 +77,7 @@ def regular_record(obj: ObjectSpec, colors, arrangement_name: str, anchors, obje
     return {
         "board_type": "regular", "object_type": object_type,
         "combo_name": name, "shapes": list(obj.shapes), "colors": colors,
-        "quadrant": "tl", "rows": ROWS, "cols": COLS,
+        "quadrant": "tl", "rows": DEFAULT_ROWS, "cols": DEFAULT_COLS,
         "seed": obj.seed, "arrangement": arrangement_name,
         "placement": None,
         "occupied_rows": obj.rows, "occupied_cols": obj.cols,
