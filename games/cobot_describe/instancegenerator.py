@@ -19,15 +19,16 @@ split, for a smoke run with a local model: `clem run -g cobot_describe -m MODEL 
 from __future__ import annotations
 
 import argparse
-import json
 import sys
 from pathlib import Path
 
 from clemcore.clemgame import GameInstanceGenerator
 
+from sartco.cli import UserError
 from sartco.clem.describer import INSTRUCTION_SLOT
 from sartco.clem.episodes import DESCRIBED_TASK, board_fields
 from sartco.instances.examples import select_examples
+from sartco.instances.generate import load_dataset
 from sartco.instances.prompts import builder_prompt, describer_prompt, instruction_text
 
 GAME_DIR = Path(__file__).resolve().parent
@@ -41,12 +42,12 @@ EXPERIMENTS = {
 }
 
 
-def load_split(dataset: Path, stem: str, split: str) -> list[dict]:
-    path = dataset / f"{stem}_{split}.json"
-    try:
-        return json.loads(path.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        sys.exit(f"instancegenerator: {path}: missing (generate the dataset first: sartco generate)")
+def split_records(dataset: Path, files: dict[str, list[dict]], stem: str, split: str) -> list[dict]:
+    """The records of one split (files: from sartco.instances.generate.load_dataset)."""
+    name = f"{stem}_{split}.json"
+    if name not in files:
+        sys.exit(f"instancegenerator: {dataset / name}: missing (generate the dataset first: sartco generate)")
+    return files[name]
 
 
 def spread(items: list, n: int | None) -> list:
@@ -63,7 +64,7 @@ class CobotDescribeInstanceGenerator(GameInstanceGenerator):
 
     def on_generate(self, seed: int, dataset: Path = REPO / "instances" / "v1", examples: int = 5,
                     per_experiment: int | None = None, **kwargs):
-        manifest = json.loads((dataset / "manifest.json").read_text(encoding="utf-8"))
+        manifest, files = load_dataset(dataset)
         self.instances["dataset"] = {"version": manifest["version"], "seed": manifest["seed"],
                                      "source": manifest["source"], "split": "test"}
         self.instances["seed"] = seed
@@ -73,8 +74,8 @@ class CobotDescribeInstanceGenerator(GameInstanceGenerator):
             experiment.update(board_type=board_type, object_type=object_type, task=task, source="describer",
                               split="test", dataset=manifest["version"], dataset_seed=manifest["seed"],
                               examples=examples, example_seed=seed)
-            pool = load_split(dataset, stem, "train")
-            for record in spread(load_split(dataset, stem, "test"), per_experiment):
+            pool = split_records(dataset, files, stem, "train")
+            for record in spread(split_records(dataset, files, stem, "test"), per_experiment):
                 instance = self.add_game_instance(experiment, game_id)
                 instance.update(board_fields(record, task))
                 shots = select_examples(record, pool, k=examples, rng=seed)
@@ -96,14 +97,18 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
     if not (args.dataset / "manifest.json").is_file():
         parser.error(f"--dataset {args.dataset}: no manifest.json (not a dataset folder)")
-    print(CobotDescribeInstanceGenerator().generate("instances.json", seed=args.seed, dataset=args.dataset,
-                                                    examples=args.examples))
-    if args.slice is not None:
-        if args.slice < 1:
-            parser.error("--slice must be at least 1")
-        print(CobotDescribeInstanceGenerator().generate("instances_slice.json", seed=args.seed,
-                                                        dataset=args.dataset, examples=args.examples,
-                                                        per_experiment=args.slice))
+    if args.slice is not None and args.slice < 1:
+        parser.error("--slice must be at least 1")
+    try:
+        print(CobotDescribeInstanceGenerator().generate("instances.json", seed=args.seed, dataset=args.dataset,
+                                                        examples=args.examples))
+        if args.slice is not None:
+            print(CobotDescribeInstanceGenerator().generate("instances_slice.json", seed=args.seed,
+                                                            dataset=args.dataset, examples=args.examples,
+                                                            per_experiment=args.slice))
+    except UserError as exc:
+        print(f"instancegenerator: {exc}", file=sys.stderr)
+        return 2
     return 0
 
 

@@ -31,15 +31,16 @@ N - 1 repairs after execution feedback, sartco.clem.feedback) and `feedback_of` 
 from __future__ import annotations
 
 import argparse
-import json
 import os
 import sys
 from pathlib import Path
 
 from clemcore.clemgame import GameInstanceGenerator
 
+from sartco.cli import UserError
 from sartco.clem.episodes import DESCRIBED_TASK, board_fields
 from sartco.instances.examples import MAX_EXAMPLES, select_examples
+from sartco.instances.generate import load_dataset
 from sartco.instances.prompts import SECTIONS, builder_prompt, builder_turn, gold_code, instruction_text
 
 GAME_DIR = Path(__file__).resolve().parent
@@ -60,19 +61,14 @@ CELLS = [
 ]
 
 
-class UserError(Exception):
-    pass
-
-
-def load_dataset(path: Path) -> tuple[dict, dict[str, list[dict]]]:
-    """manifest and records by file name of one dataset folder."""
-    manifest_file = path / "manifest.json"
-    if not manifest_file.is_file():
-        raise UserError(f"{manifest_file}: no dataset manifest (expected a folder written by `sartco generate` "
-                        f"or `sartco import`)")
-    manifest = json.loads(manifest_file.read_text(encoding="utf-8"))
-    files = {name: json.loads((path / name).read_text(encoding="utf-8")) for name in manifest.get("files", {})}
-    return manifest, files
+def dataset_info(manifest: dict, path: Path, seed: int, n_examples: int, examples_from: dict | None = None) -> dict:
+    """What an instance file records about its dataset (examples_from: the dataset of the
+    in-context examples when it is another one)."""
+    info = {"version": manifest["version"], "source": manifest["source"], "seed": manifest.get("seed"),
+            "path": os.path.relpath(path, REPO)}
+    if examples_from is not None:
+        info["examples_from"] = examples_from
+    return {**info, "generator_seed": seed, "n_examples": n_examples}
 
 
 def records(files: dict, board: str, split: str) -> list[dict]:
@@ -131,8 +127,7 @@ class CobotInstructInstanceGenerator(GameInstanceGenerator):
                     n_examples: int = N_EXAMPLES, ablation_episodes: int = ABLATION_EPISODES,
                     describers_dir: Path | None = None):
         manifest, files = load_dataset(dataset_dir)
-        info = {"version": manifest["version"], "source": manifest["source"], "seed": manifest.get("seed"),
-                "path": os.path.relpath(dataset_dir, REPO), "generator_seed": seed, "n_examples": n_examples}
+        info = dataset_info(manifest, dataset_dir, seed, n_examples)
         self.instances["dataset"] = info
         pools = {board: records(files, board, "train") for board in BOARDS}
         if describers_dir is not None:
@@ -158,9 +153,7 @@ class CobotInstructInstanceGenerator(GameInstanceGenerator):
                     self.add_episodes(exp, val, task, "template", pools[board], seed, n_examples, kept)
             return
         pub_manifest, pub_files = load_dataset(published_dir)
-        pub_info = {"version": pub_manifest["version"], "source": pub_manifest["source"],
-                    "seed": pub_manifest.get("seed"), "path": os.path.relpath(published_dir, REPO),
-                    "examples_from": info, "generator_seed": seed, "n_examples": n_examples}
+        pub_info = dataset_info(pub_manifest, published_dir, seed, n_examples, examples_from=info)
         self.instances["dataset"] = pub_info
         for board, task, _, sources in CELLS:
             for source in sources:
@@ -175,9 +168,7 @@ class CobotInstructInstanceGenerator(GameInstanceGenerator):
         manifest, files = load_dataset(describers_dir)
         if manifest.get("source") != "describer":
             raise UserError(f"{describers_dir}: not a describer dataset (manifest source {manifest.get('source')!r})")
-        d_info = {"version": manifest["version"], "source": manifest["source"], "seed": manifest.get("seed"),
-                  "path": os.path.relpath(describers_dir, REPO), "examples_from": info, "generator_seed": seed,
-                  "n_examples": n_examples}
+        d_info = dataset_info(manifest, describers_dir, seed, n_examples, examples_from=info)
         self.instances["dataset"] = d_info
         for source in manifest["config"]["instruction_sources"]:
             for board, (board_type, _) in BOARDS.items():

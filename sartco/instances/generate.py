@@ -23,6 +23,8 @@ from collections import defaultdict
 from pathlib import Path
 from typing import Any, Callable
 
+from sartco.cli import UserError
+
 from .arrangements import anchors
 from .config import BOARD_TYPES, SPLITS, Config, load_config
 from .objects import ObjectSpec, enumerate_objects
@@ -44,6 +46,32 @@ def dumps_records(records: list[dict]) -> str:
     if not records:
         return "[]\n"
     return "[\n" + ",\n".join(json.dumps(r, ensure_ascii=False, sort_keys=False) for r in records) + "\n]\n"
+
+
+def load_dataset(folder: str | Path) -> tuple[dict, dict[str, list[dict]]]:
+    """The manifest and the records by file name of one dataset folder (the files its manifest lists)."""
+    folder = Path(folder)
+    manifest_file = folder / "manifest.json"
+    if not manifest_file.is_file():
+        raise UserError(f"{manifest_file}: no dataset manifest (expected a folder written by `sartco generate` "
+                        f"or `sartco import`)")
+    manifest = _read_json(manifest_file)
+    listed = manifest.get("files") if isinstance(manifest, dict) else None
+    if not isinstance(listed, dict):
+        raise UserError(f"{manifest_file}: no \"files\" object (not a dataset manifest)")
+    files = {}
+    for name in listed:
+        if not (folder / name).is_file():
+            raise UserError(f"{folder / name}: listed in the manifest but missing")
+        files[name] = _read_json(folder / name)
+    return manifest, files
+
+
+def _read_json(path: Path):
+    try:
+        return json.loads(path.read_text(encoding="utf-8"))
+    except (ValueError, OSError) as exc:
+        raise UserError(f"{path}: not readable as JSON ({exc})") from None
 
 
 def _draw(pool: list, used: set, key: Callable[[Any], Any], rng: random.Random):
