@@ -7,7 +7,7 @@
 Feedback (repair) experiments, several attempts: the last attempt decides, except that a last
 attempt without code loses (the builder did play) unless no attempt held code at all (aborted,
 as in the paper's protocol) - `outcome_of_attempts`.
-Games call `set_outcome` (one attempt) or `set_attempts_outcome` (several) and `log_outcome`;
+Games call `set_attempts_outcome` (through sartco.clem.building.finish_build) and `log_outcome`;
 nothing else maps codes to outcomes.
 """
 from __future__ import annotations
@@ -15,18 +15,7 @@ from __future__ import annotations
 from clemcore.clemgame import metrics
 from clemcore.clemgame.master import Outcome
 
-from sartco.world import MISMATCH_CODES, ErrorCode
-
-# families of error codes, for reports and transcripts
-PYTHON_CODES = frozenset({
-    ErrorCode.SYNTAX_ERROR, ErrorCode.KEY_ERROR, ErrorCode.NAME_ERROR, ErrorCode.TYPE_ERROR,
-    ErrorCode.VALUE_ERROR, ErrorCode.INDEX_ERROR, ErrorCode.ZERO_DIVISION, ErrorCode.RUNTIME_ERROR,
-})
-WORLD_CODES = frozenset({
-    ErrorCode.DIMENSIONS_MISMATCH, ErrorCode.DEPTH_MISMATCH, ErrorCode.BRIDGE_PLACEMENT,
-    ErrorCode.SAME_SHAPE_STACKING, ErrorCode.SAME_SHAPE_AT_ALTERNATE_LEVELS, ErrorCode.NOT_ON_TOP_OF_SCREW,
-})
-SANDBOX_CODES = frozenset({ErrorCode.FORBIDDEN, ErrorCode.TIMEOUT, ErrorCode.RESOURCE_LIMIT})
+from sartco.world import MISMATCH_CODES, PYTHON_CODES, SANDBOX_CODES, WORLD_CODES, ErrorCode
 
 SUCCESS_CATEGORY = "success"  # the category recorded when the target was built
 
@@ -56,11 +45,6 @@ def outcome_for(category: str | ErrorCode | None) -> Outcome:
     if ErrorCode(category) is ErrorCode.PARSE_ERROR:
         return Outcome.ABORTED
     return Outcome.FAILURE
-
-
-def set_outcome(state, category: str | ErrorCode | None) -> Outcome:
-    """Move a clemcore GameState to the outcome of `category`."""
-    return _enter(state, outcome_for(category))
 
 
 def outcome_of_attempts(categories) -> Outcome:

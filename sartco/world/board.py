@@ -64,7 +64,3 @@ def parse_key(key: str) -> tuple[int, int]:
     row, _, col = key.partition(":")
     return int(row), int(col)
 
-
-def sort_cells(cells: Cells) -> Cells:
-    """The same cells with keys in row-major order (the canonical order for JSON)."""
-    return {k: [list(p) for p in cells[k]] for k in sorted(cells, key=parse_key)}

@@ -36,6 +36,16 @@ class ErrorCode(StrEnum):
     PARSE_ERROR = "parse_error"
 
 
+# families of error codes, for reports and transcripts (sartco.clem.outcomes.family)
+PYTHON_CODES = frozenset({
+    ErrorCode.SYNTAX_ERROR, ErrorCode.KEY_ERROR, ErrorCode.NAME_ERROR, ErrorCode.TYPE_ERROR,
+    ErrorCode.VALUE_ERROR, ErrorCode.INDEX_ERROR, ErrorCode.ZERO_DIVISION, ErrorCode.RUNTIME_ERROR,
+})
+WORLD_CODES = frozenset({
+    ErrorCode.DIMENSIONS_MISMATCH, ErrorCode.DEPTH_MISMATCH, ErrorCode.BRIDGE_PLACEMENT,
+    ErrorCode.SAME_SHAPE_STACKING, ErrorCode.SAME_SHAPE_AT_ALTERNATE_LEVELS, ErrorCode.NOT_ON_TOP_OF_SCREW,
+})
+SANDBOX_CODES = frozenset({ErrorCode.FORBIDDEN, ErrorCode.TIMEOUT, ErrorCode.RESOURCE_LIMIT})
 MISMATCH_CODES = frozenset(c for c in ErrorCode if c.value.startswith("mismatch_"))
 
 
