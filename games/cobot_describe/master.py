@@ -26,9 +26,9 @@ from clemcore.clemgame.errors import ParseError
 
 from sartco.clem import benchmark
 from sartco.clem.builder import Builder, rulebased_code
-from sartco.clem.building import build, log_build, parse_failure
+from sartco.clem.building import build_for, finish_build, parse_failure_for
 from sartco.clem.describer import DescribeScorer, Describer, fill_builder_prompt, log_instruction, parse_instruction
-from sartco.clem.outcomes import log_outcome, set_outcome
+from sartco.clem.outcomes import log_outcome
 from sartco.clem.parsing import parse_code
 
 
@@ -63,18 +63,14 @@ class CobotDescribe(DialogueGameMaster):
             log_instruction(self, parsed, e["combo_name"])
             self.set_context_for(self.builder, fill_builder_prompt(e["builder_prompt"], parsed))
             return
-        record = build(parsed, e["target"], given_code=e.get("given_code", ""), rows=e["rows"], cols=e["cols"])
-        log_build(self, record)
-        set_outcome(self.state, record.category)
+        finish_build(self, build_for(e, parsed))
 
     def _on_parse_error(self, error: ParseError):
         e = self.episode
         role = self.current_player.game_role
         if self.current_player is self.describer:
             log_instruction(self, None, e["combo_name"], error=error.reason)
-        record = parse_failure(e["target"], f"{role}: {error.reason}", rows=e["rows"], cols=e["cols"])
-        log_build(self, record)
-        set_outcome(self.state, record.category)
+        finish_build(self, parse_failure_for(e, f"{role}: {error.reason}"))
 
     def _on_after_game(self):
         log_outcome(self)

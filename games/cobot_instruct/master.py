@@ -29,9 +29,9 @@ from clemcore.clemgame.errors import ParseError
 
 from sartco.clem import benchmark  # the module, not the class: one GameBenchmark subclass per master.py
 from sartco.clem.builder import Builder, rulebased_code
-from sartco.clem.building import ATTEMPTS_KEY, BuildRecord, build, log_build, parse_failure
+from sartco.clem.building import ATTEMPTS_KEY, BuildRecord, build_for, finish_build, log_build, parse_failure_for
 from sartco.clem.feedback import feedback_for, max_attempts
-from sartco.clem.outcomes import log_outcome, set_attempts_outcome
+from sartco.clem.outcomes import log_outcome
 from sartco.clem.parsing import parse_code
 from sartco.clem.scoring import BuildScorer
 
@@ -44,7 +44,6 @@ class CobotInstruct(DialogueGameMaster):
         self.codes: list[str] = []
         self.attempts: list[BuildRecord] = []
         self.max_attempts = max_attempts(self.experiment)
-        self.repairing = False  # after the first attempt: every answer is a complete program
         self.builder = Builder(self.player_models[0], gold_turns=instance["gold_turns"], rulebased=self._follow,
                                script=instance.get("script"))
         self.add_player(self.builder, initial_prompt=instance.get("prompt") or None,
@@ -54,8 +53,8 @@ class CobotInstruct(DialogueGameMaster):
         """What the rule-based follower writes for this turn (model `rulebased`)."""
         from sartco.follower import FollowError, follow_turn
         i = self.instance
-        rows, cols = i.get("rows", 8), i.get("cols", 8)
-        if i["task"] == "first_order" and len(i["instructions"]) > 1 and not self.repairing:  # one turn's puts
+        rows, cols = i["rows"], i["cols"]
+        if i["task"] == "first_order" and len(i["instructions"]) > 1 and not self.attempts:  # one turn's puts
             k = min(turn, len(i["instructions"]) - 1)
             try:
                 return follow_turn(i["instructions"][k], i["instructions"][:k], rows, cols)
@@ -67,34 +66,26 @@ class CobotInstruct(DialogueGameMaster):
         return parse_code(response)
 
     def _advance_game(self, player: Player, code: str):
-        if self.repairing:
-            self.codes = [code]  # a repair answer is the complete program
+        if self.attempts:  # a repair: after the first attempt every answer is the complete program
+            self.codes = [code]
         else:
             self.codes.append(code)
             if len(self.codes) < len(self.turns):
                 self.set_context_for(self.builder, self.turns[len(self.codes)])
                 return
-        i = self.instance
-        record = build("\n".join(self.codes), i["target"], given_code=i.get("given_code", ""),
-                       rows=i.get("rows", 8), cols=i.get("cols", 8), turn_codes=self.codes)
-        self._end_attempt(record)
+        self._end_attempt(build_for(self.instance, "\n".join(self.codes), turn_codes=self.codes))
 
     def _on_parse_error(self, error: ParseError):
-        i = self.instance
-        record = parse_failure(i["target"], error.reason or "no code found", turn_codes=self.codes,
-                               rows=i.get("rows", 8), cols=i.get("cols", 8))
-        self._end_attempt(record)
+        self._end_attempt(parse_failure_for(self.instance, error.reason or "no code found", turn_codes=self.codes))
 
     def _end_attempt(self, record: BuildRecord):
         """One attempt is over: end the episode (success or no attempt left) or feed the failure back."""
         self.attempts.append(record)
         left = self.max_attempts - len(self.attempts)
         if record.es or left <= 0:
-            log_build(self, record)
-            set_attempts_outcome(self.state, [a.category for a in self.attempts])
+            finish_build(self, record, self.attempts)
             return
         log_build(self, record, final=False)
-        self.repairing = True
         self.codes = []
         self.set_context_for(self.builder, feedback_for(record, attempts_left=left))
 

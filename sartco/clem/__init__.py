@@ -3,7 +3,7 @@ live inside a game folder). Reuse these from any game whose player writes code:
 
 - parsing.parse_code / ParseError      find the code in an answer (no code -> aborted)
 - outcomes                             the one ErrorCode -> clemcore outcome/logging translation
-- building.build / parse_failure / log_build / BuildRecord   execute, compare, record
+- building.build_for / parse_failure_for / finish_build / BuildRecord   execute, compare, record, end
 - feedback.feedback_for / max_attempts   the one message after a failed attempt (feedback
                                        experiments: execution facts only, never the target)
 - builder.Builder                      the Builder player (mock = gold, rulebased, human)

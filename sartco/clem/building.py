@@ -1,7 +1,8 @@
 """Run a builder's code through sartco.program and record what happened, as one JSON-able record.
 
-The game master calls `build(...)` once per episode (or once per attempt in a repair
-experiment), logs the record with `log_build`, and moves the game state with
+The game master calls `build_for(instance, ...)` (`build` with the instance's board fields) once
+per episode (or once per attempt in a repair experiment) and ends the episode with
+`finish_build`, which logs the final record with `log_build` and moves the game state with
 sartco.clem.outcomes. The scorer reads the record back with `BuildRecord.from_json`; it never
 executes anything.
 """
@@ -12,7 +13,7 @@ from dataclasses import asdict, dataclass, field, fields
 from sartco.world import ErrorCode
 from sartco.world.render import differing_cells
 
-from .outcomes import SUCCESS_CATEGORY, family
+from .outcomes import SUCCESS_CATEGORY, family, set_attempts_outcome
 
 BUILD_KEY = "sartco_build"          # interactions.json key of the final build record
 ATTEMPTS_KEY = "sartco_attempts"    # every attempt's record, for repair experiments
@@ -80,15 +81,14 @@ def build(builder_code: str, target: dict, *, given_code: str = "", rows: int = 
     program = compose_program(builder_code, given_code=given_code, rows=rows, cols=cols)
     ex = execute(program, rows=rows, cols=cols)
     cmp = compare(ex.cells, target)
+    error = None if ex.error is None else str(ErrorCode(ex.error))  # sartco.program: set whenever not ok
     if not ex.ok:
-        category = str(ErrorCode(ex.error)) if ex.error is not None else str(ErrorCode.RUNTIME_ERROR)
-        es = 0
+        category, es = error, 0
     else:
         es = int(cmp.es)
         category = SUCCESS_CATEGORY if es else str(ErrorCode(cmp.category))  # es == (cmp.category is None)
     return BuildRecord(
-        builder_code=builder_code, program=program, ok=bool(ex.ok),
-        error=None if ex.error is None else str(ErrorCode(ex.error)), message=ex.message or "",
+        builder_code=builder_code, program=program, ok=bool(ex.ok), error=error, message=ex.message or "",
         cells=ex.cells, target=target, puts=int(ex.puts), es=es, category=category,
         precision=float(cmp.precision), recall=float(cmp.recall), f1=float(cmp.f1),
         rows=rows, cols=cols, turn_codes=list(turn_codes or [builder_code]),
@@ -104,6 +104,26 @@ def parse_failure(target: dict, message: str, *, turn_codes: list[str] | None = 
         cells={}, target=target, puts=0, es=0, category=str(ErrorCode.PARSE_ERROR),
         precision=0.0, recall=0.0, f1=0.0, rows=rows, cols=cols, turn_codes=list(turn_codes or []),
     )
+
+
+def build_for(instance: dict, builder_code: str, turn_codes: list[str] | None = None) -> BuildRecord:
+    """`build` with the target, given code and board size of a game instance (the fields of
+    sartco.clem.episodes.board_fields)."""
+    return build(builder_code, instance["target"], given_code=instance["given_code"],
+                 rows=instance["rows"], cols=instance["cols"], turn_codes=turn_codes)
+
+
+def parse_failure_for(instance: dict, message: str, turn_codes: list[str] | None = None) -> BuildRecord:
+    """`parse_failure` with the target and board size of a game instance."""
+    return parse_failure(instance["target"], message, turn_codes=turn_codes,
+                         rows=instance["rows"], cols=instance["cols"])
+
+
+def finish_build(game_master, record: BuildRecord, attempts: list[BuildRecord] | None = None) -> None:
+    """The episode ends with `record`: log it as the final build and move the game state to the
+    outcome of the attempts (every attempt in order, `record` the last; default: `record` alone)."""
+    log_build(game_master, record)
+    set_attempts_outcome(game_master.state, [a.category for a in (attempts or [record])])
 
 
 def log_build(game_master, record: BuildRecord, *, final: bool = True) -> None:

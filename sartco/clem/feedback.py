@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import re
 
-from sartco.world import ErrorCode
+from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, ErrorCode
 from sartco.world.render import grid_text
 
 ATTEMPTS_FIELD = "attempts"          # experiment field: attempts per episode, the first included (default 1)
@@ -38,7 +38,7 @@ BOARD_FORM = ("one list per row from the top; an empty cell is ⬜️, a filled 
               "from the bottom up as (shape, color)")
 
 
-def feedback_message(*, error: str | None, message: str, cells: dict, rows: int = 8, cols: int = 8,
+def feedback_message(*, error: str | None, message: str, cells: dict, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS,
                      attempts_left: int | None = None) -> str:
     """What the game master tells the builder about its last attempt.
 
@@ -65,9 +65,8 @@ def feedback_message(*, error: str | None, message: str, cells: dict, rows: int 
 def feedback_for(record, *, attempts_left: int | None = None) -> str:
     """feedback_message from a BuildRecord's execution facts (never its target or comparison);
     line numbers in the message are counted in the builder's own code."""
-    error = record.error if record.error or record.ok else str(ErrorCode.RUNTIME_ERROR)
     message = builder_lines(record.message, record.program, record.builder_code)
-    return feedback_message(error=error, message=message, cells=record.cells,
+    return feedback_message(error=record.error, message=message, cells=record.cells,
                             rows=record.rows, cols=record.cols, attempts_left=attempts_left)
 
 

@@ -17,6 +17,7 @@ import json
 import logging
 from pathlib import Path
 
+from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
 from sartco.world.render import diff_svg
 
 from .building import ATTEMPTS_KEY, BOARD_EVENT, BUILD_KEY
@@ -59,7 +60,7 @@ def attach_pictures(interactions_file: str | Path) -> bool:
 def _draw(path: Path, record: dict) -> Path:
     """Target beside built board (differing cells framed), as SVG at `path`; the absolute path."""
     path = path.resolve()
-    path.write_text(diff_svg(record["target"], record["cells"], record.get("rows", 8), record.get("cols", 8)),
+    path.write_text(diff_svg(record["target"], record["cells"], record.get("rows", DEFAULT_ROWS), record.get("cols", DEFAULT_COLS)),
                     encoding="utf-8")
     return path
 
