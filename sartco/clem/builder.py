@@ -43,16 +43,14 @@ class Builder(Player):
     def _custom_response(self, context: dict) -> str:
         turn = self.turn
         self.turn += 1
-        if self.model.name == RULEBASED:
+        is_rulebased = self.model.name == RULEBASED
+        if is_rulebased or (self.mock_follows and self.script is None):  # the script comes first for `mock`
             if self.rulebased is None:
-                raise RuntimeError("this game has no rule-based builder")
+                raise RuntimeError("this game has no rule-based builder" if is_rulebased
+                                   else "mock_follows needs a rule-based builder")
             return fenced(self.rulebased(turn, context))
         if self.script is not None:
             return self.script[min(turn, len(self.script) - 1)]
-        if self.mock_follows:
-            if self.rulebased is None:
-                raise RuntimeError("mock_follows needs a rule-based builder")
-            return fenced(self.rulebased(turn, context))
         if not self.gold_turns:
             return "I have no code for this."
         return fenced(self.gold_turns[min(turn, len(self.gold_turns) - 1)])
