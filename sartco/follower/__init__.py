@@ -16,11 +16,11 @@ no other exception leaves these functions for str input. `try_follow` returns No
 """
 from __future__ import annotations
 
+from sartco.instances.prompts import TASKS
+
 from . import emit
 from .parse import Arrangement, FollowError, Placement, object_name, placements
 from .regular import arrange
-
-TASKS = ("first_order", "sequence_function", "optimal_function", "repetition")
 
 __all__ = ["follow", "follow_turn", "try_follow", "read_placements", "FollowError", "Placement",
            "Arrangement", "TASKS"]

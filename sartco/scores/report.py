@@ -25,11 +25,10 @@ from pathlib import Path
 
 from sartco.clem.feedback import max_attempts
 from sartco.cli import UserError
+from sartco.instances.importer import SOURCE_ORDER
+from sartco.instances.prompts import TASKS as TASK_ORDER
 from sartco.world import ErrorCode
 
-TASK_ORDER = ["first_order", "sequence_function", "optimal_function", "repetition"]
-SOURCE_ORDER = ["template", "human", "codellama", "gpt4", "claude"]
-BOARD_NAMES = {"simple": "simple", "regular": "regular"}
 TASK_NAMES = {"first_order": "first-order (multi-turn)", "sequence_function": "function from puts",
               "optimal_function": "optimal function", "repetition": "repetition"}
 
