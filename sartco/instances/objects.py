@@ -8,10 +8,11 @@ shapes, colours and an anchor, the seed gives the object's first-order puts.
 An object is a filling of a seed's open slots that
 - places without error on an empty board (sartco.world.put, the one set of rules, which also
   puts nothing on a screw),
-- repeats no washer, nut or screw within one stack (one cell). Bridges are exempt: their
-  stacking is governed by the world's rules alone, and the published object bbb stacks the
-  second cell of a bridge-h on another bridge-h. (Equivalently: no shape name repeats among
-  the puts anchored at one offset. Both readings give the same 262 fillings: 68 combo names.)
+- repeats no shape among the puts anchored at one offset: no washer, nut or screw twice in
+  one stack, and no bridge on a bridge of the same orientation at the same anchor. The world
+  lets a bridge lie directly on a bridge of the same orientation (as the authors' simulator;
+  the published object bbb stacks the second cell of a bridge-h on another bridge-h), but the
+  authors' objects never repeat a piece at one anchor: 262 fillings, 68 combo names.
 A colouring gives each component one of the colours such that no piece lies directly on a
 piece of the same colour (checked in both cells of a bridge).
 """
@@ -97,12 +98,9 @@ def _places(shapes, dxs, dys) -> bool:
     return True
 
 
-def _no_repeated_part(shapes, stacks) -> bool:
-    for pieces in stacks.values():
-        letters = [LETTERS[shapes[i]] for i in pieces if shapes[i] not in BRIDGES]
-        if len(set(letters)) != len(letters):
-            return False  # a washer, nut or screw twice in one stack
-    return True
+def _no_repeated_part(shapes, dxs, dys) -> bool:
+    anchored = list(zip(shapes, dxs, dys))
+    return len(set(anchored)) == len(anchored)  # no shape twice at one anchor
 
 
 def _colorings(n: int, stacks, colors) -> tuple[tuple[str, ...], ...]:
@@ -120,9 +118,9 @@ def fill(seed: Seed, colors=COLORS) -> list[ObjectSpec]:
     for shapes in itertools.product(*options):
         if not _places(shapes, dxs, dys):
             continue
-        stacks = _stacks(shapes, dxs, dys)
-        if not _no_repeated_part(shapes, stacks):
+        if not _no_repeated_part(shapes, dxs, dys):
             continue
+        stacks = _stacks(shapes, dxs, dys)
         cells = tuple(sorted(stacks))
         out.append(ObjectSpec(
             seed=seed.name, combo="".join(LETTERS[s] for s in shapes), shapes=tuple(shapes),

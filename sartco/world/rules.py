@@ -6,10 +6,11 @@ Where the authors' simulator was wrong we are right (see ../shared/sartco-data/R
 - nothing goes on a screw, a bridge included (theirs let a bridge onto a screw);
 - a failed put leaves the board unchanged (theirs left a failed bridge's first half).
 
-Bridges: `bridge-h` at (x, y) also covers (x, y+1), `bridge-v` also covers (x+1, y). The
-same-shape rules are checked at the anchor cell (x, y): the published gold boards stack a
-bridge-h's second cell directly on another bridge-h (object bbb), which the authors' simulator
-accepted, and the paper's 68 objects depend on it.
+Bridges: `bridge-h` at (x, y) also covers (x, y+1), `bridge-v` also covers (x+1, y). As in the
+authors' simulator, the same-shape rules apply only when a washer, nut or screw is placed: a
+bridge may lie directly on a bridge of the same orientation (the published data needs it), and
+a washer, nut or screw is checked against the two pieces below it in its cell, bridges
+included. A bridge whose second cell is full is a value_error, checked before the depths.
 """
 from __future__ import annotations
 
@@ -52,17 +53,20 @@ def check(board: Board, shape, color, x, y) -> int | None:
         if height >= 2:
             _fail(E.BRIDGE_PLACEMENT, f"{shape} at ({x}, {y}) would sit at level {height + 1}; bridges go on level 1 or 2")
         second = x2 * cols + y2
+        if len(stacks[second]) >= MAX_DEPTH:
+            _fail(E.VALUE_ERROR, f"{shape} at ({x}, {y}) needs cell ({x2}, {y2}), which is full ({MAX_DEPTH} pieces)")
         if len(stacks[second]) != height:
             _fail(E.DEPTH_MISMATCH, f"{shape} at ({x}, {y}) spans cells of heights {height} and {len(stacks[second])}")
     if height:
         top = anchor[-1][0]
         if top in NOTHING_ON_TOP:
             _fail(E.NOT_ON_TOP_OF_SCREW, f"cell ({x}, {y}) has a {top} on top; nothing goes on a screw")
-        if second is not None and stacks[second][-1][0] in NOTHING_ON_TOP:
-            _fail(E.NOT_ON_TOP_OF_SCREW, f"cell ({x2}, {y2}) has a {stacks[second][-1][0]} on top; nothing goes on a screw")
-        if top == shape:
+        if second is not None:  # a bridge: its second cell too; bridges are exempt from the same-shape rules
+            if stacks[second][-1][0] in NOTHING_ON_TOP:
+                _fail(E.NOT_ON_TOP_OF_SCREW, f"cell ({x2}, {y2}) has a {stacks[second][-1][0]} on top; nothing goes on a screw")
+        elif top == shape:
             _fail(E.SAME_SHAPE_STACKING, f"{shape} directly on a {shape} at ({x}, {y})")
-        if height >= 2 and anchor[-2][0] == shape:
+        elif height >= 2 and anchor[-2][0] == shape:
             _fail(E.SAME_SHAPE_AT_ALTERNATE_LEVELS, f"{shape} two levels above a {shape} at ({x}, {y})")
     if shape not in SHAPES:
         _fail(E.KEY_ERROR, f"unknown shape {shape!r:.40}; expected one of {', '.join(SHAPES)}")
