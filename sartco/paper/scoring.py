@@ -1,0 +1,150 @@
+"""Per-turn and per-dialogue scores of the paper protocol (paper-protocol README, "Scoring").
+
+    score_turn(prediction, gold, variant, given_function="") -> TurnScore(em, cb, es, category, message)
+    score_dialogue(responses, episode) -> DialogueScore(em, cb, es, turns)
+
+Per turn, over the keys present in both gold and prediction (output; or function and usage):
+- EM: for each key with a non-empty gold, the gold's non-empty stripped lines equal the
+  prediction's, where every prediction line containing ":" is first replaced by the text after
+  its first ":" (stripped). A `def ...:` or `for ...:` line therefore never matches: EM is 0 on
+  every function and repetition cell, as in the paper. An empty prediction fails.
+- CB: for each such key, CodeBLEU (sartco.scores.code_bleu: codebleu's calc_codebleu([gold],
+  [pred], lang="python", weights 0.25 x 4) with its data-flow order fixed, see its docstring),
+  rounded to 3 decimals, > 0.5; an empty prediction fails. Table 3's CB is this pass rate.
+- ES: each key but usage runs alone on a fresh 8x8 board through sartco.program.execute (the
+  sandbox; never exec), after dropping one trailing newline, ";", "." or ","; regular boards get
+  the sample's gold object function + "\n" in front of both gold and prediction. A program
+  containing the text "while" fails (the authors' scorer refused it: category `forbidden`,
+  message "While loop not supported"); a program that raises fails with its ErrorCode; a board
+  other than the gold program's board fails with the mismatch category.
+A turn succeeds on a metric when every compared key does. An empty answer fails all three
+(category parse_error, "empty answer"; the authors' scorer crashed on it).
+Per dialogue: each metric is the share of successful turns; Table 3 is the mean over a cell's
+dialogues. `category` is None exactly when ES succeeded.
+"""
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass
+from functools import lru_cache
+
+from sartco.program import compare, execute
+from sartco.scores import code_bleu
+from sartco.world import ErrorCode
+
+from .reading import read_answer
+from .vocabulary import NOT_EXECUTED, VARIANTS
+
+WHILE_REFUSAL = "While loop not supported"
+CB_THRESHOLD = 0.5
+CB_DECIMALS = 3
+TRAILING = ("\n", ";", ".", ",")
+
+
+@dataclass(frozen=True, slots=True)
+class TurnScore:
+    em: bool
+    cb: bool
+    es: bool
+    category: str | None      # ErrorCode value when ES failed, None on ES success
+    message: str = ""         # why ES failed (the error's message, the while refusal, ...)
+
+    def to_json(self) -> dict:
+        return asdict(self)
+
+
+@dataclass(frozen=True, slots=True)
+class DialogueScore:
+    em: float                 # share of turns with EM success
+    cb: float
+    es: float
+    turns: list
+
+    def to_json(self) -> dict:
+        return {"em": self.em, "cb": self.cb, "es": self.es, "turns": [t.to_json() for t in self.turns]}
+
+
+EMPTY = TurnScore(False, False, False, str(ErrorCode.PARSE_ERROR), "empty answer")
+
+
+def gold_lines(text: str) -> list[str]:
+    return [line.strip() for line in text.split("\n") if line.strip()]
+
+
+def prediction_lines(text: str) -> list[str]:
+    """Non-empty stripped lines, each line containing ":" first cut to the text after its first ":"."""
+    lines = (line.split(":", 1)[1] if ":" in line else line for line in text.split("\n"))
+    return [line.strip() for line in lines if line.strip()]
+
+
+def exact_match(prediction: str, gold: str) -> bool:
+    return bool(prediction.strip()) and prediction_lines(prediction) == gold_lines(gold)
+
+
+def codebleu_pass(prediction: str, gold: str) -> bool:
+    return bool(prediction.strip()) and round(code_bleu(prediction, gold), CB_DECIMALS) > CB_THRESHOLD
+
+
+def es_program(code: str, given_function: str = "") -> str:
+    """What ES runs for one key: one trailing newline/;/./, dropped, the given function in front."""
+    if code.endswith(TRAILING):
+        code = code[:-1]
+    return f"{given_function}\n{code}" if given_function else code
+
+
+@lru_cache(maxsize=4096)
+def _gold_cells(program: str) -> dict:
+    return execute(program).cells
+
+
+def execution(prediction: str, gold: str, given_function: str = "") -> tuple[bool, str | None, str]:
+    """(es, category, message) of one executed key."""
+    program = es_program(prediction, given_function)
+    if "while" in program:
+        return False, str(ErrorCode.FORBIDDEN), WHILE_REFUSAL
+    ex = execute(program)
+    if not ex.ok:
+        return False, str(ErrorCode(ex.error)), ex.message or ""
+    cmp = compare(ex.cells, _gold_cells(es_program(gold, given_function)))
+    if cmp.es:
+        return True, None, ""
+    return False, str(ErrorCode(cmp.category)), "the program built another board than the gold program"
+
+
+def score_turn(prediction: dict, gold: dict, variant: str, given_function: str = "") -> TurnScore:
+    """One turn's EM, CB pass and ES (see the module doc). prediction: read_answer's dict."""
+    if variant not in VARIANTS:
+        raise ValueError(f"unknown variant {variant!r}; expected one of {', '.join(VARIANTS)}")
+    keys = [k for k in gold if k in prediction and gold[k].strip()]
+    if not any(prediction.get(k, "").strip() for k in keys):
+        return EMPTY
+    em = all(exact_match(prediction[k], gold[k]) for k in keys)
+    cb = all(codebleu_pass(prediction[k], gold[k]) for k in keys)
+    executed = [k for k in keys if k not in NOT_EXECUTED]
+    if not executed:
+        return TurnScore(em, cb, False, str(ErrorCode.PARSE_ERROR), "no code to execute")
+    es, category, message = True, None, ""
+    for key in executed:
+        ok, category, message = execution(prediction[key], gold[key], given_function)
+        if not ok:
+            es = False
+            break
+    return TurnScore(em, cb, es, category if not es else None, message if not es else "")
+
+
+def score_dialogue(responses: list[str], episode) -> DialogueScore:
+    """Score the raw answers of one dialogue (one per turn). episode: a PaperEpisode or its
+    to_json() dict. Missing answers at the end count as empty answers; more answers than turns
+    or a non-string answer is a ValueError."""
+    ep = episode if isinstance(episode, dict) else episode.to_json()
+    golds, variant, given = ep["gold"], ep["variant"], ep.get("given_function", "")
+    if not isinstance(responses, list) or not all(isinstance(r, str) for r in responses):
+        raise ValueError("responses must be a list of strings, one raw answer per turn")
+    if len(responses) > len(golds):
+        raise ValueError(f"{len(responses)} responses for {len(golds)} turn(s)")
+    turns = []
+    for i, gold in enumerate(golds):
+        answer = responses[i] if i < len(responses) else ""
+        turns.append(EMPTY if not answer.strip() else score_turn(read_answer(answer, variant), gold, variant, given))
+    n = len(turns)
+    return DialogueScore(em=sum(t.em for t in turns) / n, cb=sum(t.cb for t in turns) / n,
+                         es=sum(t.es for t in turns) / n, turns=turns)
