@@ -4,6 +4,7 @@
                                                                        # + in/instances_feedback.json
     python games/cobot_instruct/instancegenerator.py --published instances/published
                                                # in/instances_published.json + ..._published_feedback.json
+    python games/cobot_instruct/instancegenerator.py --protocol paper   # in/instances_paper.json
 
 in/instances.json (committed) comes from a generated dataset (default instances/v1):
   - the template cells of the paper's Table 3 on the test split, one experiment each;
@@ -19,6 +20,14 @@ end in _examples_<k> or _without_<section>. In-context examples always come from
 generated dataset's train split (the published data has no simple-board train split) and show
 template instructions with gold code of the task's style (sartco.instances.examples/prompts).
 Each experiment and the file record the dataset version, source and seed, and this generator's seed.
+
+in/instances_paper.json (gitignored: it embeds the authors' templates and the published texts) is
+the paper protocol (game entry cobot_instruct_paper): sartco.paper.episodes.build_episodes, every
+Table 3 cell on the published test files (read from ../shared at generation time; examples from
+the published rb_so_train or, where the authors' training file was never published, from the
+generated dataset's train split), one experiment per cell, named paper_<board>_<object>_<task>_<source>
+as above, each recording protocol "paper", its variant, where its examples came from and the
+paper's generation settings (temperature 0, 250 tokens: run it with `clem run -t 0 -l 250`).
 
 Feedback experiments (beyond the paper, issue 7) go to a file of their own,
 in/instances_feedback.json (in/instances_published_feedback.json for the published cells), so
@@ -94,6 +103,33 @@ def episode(record: dict, task: str, source: str, examples: list[dict], sections
         gold_turns = [gold_code(record, task)]
     return {**board_fields(record, task), "source": source, "turns": turns, "instructions": instructions,
             "gold_turns": gold_turns, "examples": [ex["id"] for ex in examples]}
+
+
+class PaperInstanceGenerator(GameInstanceGenerator):
+    """in/instances_paper.json: the paper protocol's episodes, one experiment per Table 3 cell."""
+
+    def __init__(self):
+        super().__init__(str(GAME_DIR))
+
+    def on_generate(self, seed: int, dataset_dir: Path, published_dir: Path | None = None):
+        from sartco.clem.paper import experiment_fields, instance_fields
+        from sartco.paper import PROTOCOL
+        from sartco.paper.episodes import DEFAULT_PUBLISHED, build_episodes
+
+        published_dir = published_dir or DEFAULT_PUBLISHED
+        cells: dict[tuple, list[dict]] = {}
+        for ep in build_episodes(published_dir=published_dir, generated_dir=dataset_dir):
+            cells.setdefault((ep.file, ep.variant), []).append(ep.to_json())
+        self.instances["dataset"] = {"protocol": PROTOCOL, "published": os.path.relpath(published_dir, REPO),
+                                     "generated": os.path.relpath(dataset_dir, REPO)}
+        names = {types: board for board, types in BOARDS.items()}
+        for episodes in cells.values():
+            cell = episodes[0]["cell"]
+            exp = self.add_experiment(f"{PROTOCOL}_{names[cell['board'], cell['object']]}_{cell['task']}_{cell['source']}")
+            exp.update(experiment_fields(episodes[0]))
+            exp.move_to_end("game_instances")
+            for game_id, episode in enumerate(episodes):
+                self.add_game_instance(exp, game_id).update(instance_fields(episode))
 
 
 class CobotInstructInstanceGenerator(GameInstanceGenerator):
@@ -188,6 +224,10 @@ def main(argv=None) -> int:
                              "and in/instances_published_feedback.json instead")
     parser.add_argument("--describers", type=Path, default=None,
                         help="dataset from `sartco import-instructions`: write in/instances_describers.json instead")
+    parser.add_argument("--protocol", choices=("sartco", "paper"), default="sartco",
+                        help="paper: write in/instances_paper.json, the paper protocol on the published test files")
+    parser.add_argument("--paper-data", type=Path, default=None,
+                        help="--protocol paper: the published SARTCo files (default ../shared/sartco-data/published)")
     parser.add_argument("--seed", type=int, default=42, help="seed of the in-context example choice")
     parser.add_argument("--examples", type=int, default=N_EXAMPLES, help="in-context examples (Table 3 cells)")
     parser.add_argument("--ablation-episodes", type=int, default=ABLATION_EPISODES)
@@ -197,24 +237,34 @@ def main(argv=None) -> int:
     if args.attempts < 2:
         print(f"instancegenerator: --attempts must be at least 2, not {args.attempts}", file=sys.stderr)
         return 2
+    if args.protocol == "paper":
+        return 0 if _write(PaperInstanceGenerator(), "instances_paper.json", seed=args.seed,
+                           dataset_dir=args.dataset.resolve(),
+                           published_dir=args.paper_data.resolve() if args.paper_data else None) else 2
     stem = "instances" if args.published is None else "instances_published"
     outputs = ((f"{stem}.json", None), (f"{stem}{FEEDBACK_SUFFIX}.json", args.attempts))
     if args.describers is not None:
         outputs = (("instances_describers.json", None),)
     for name, attempts in outputs:
-        try:
-            gen = CobotInstructInstanceGenerator(feedback_attempts=attempts)
-            path = gen.generate(name, seed=args.seed, dataset_dir=args.dataset.resolve(),
-                                published_dir=args.published.resolve() if args.published else None,
-                                n_examples=args.examples, ablation_episodes=args.ablation_episodes,
-                                describers_dir=args.describers.resolve() if args.describers else None)
-        except (UserError, KeyError, ValueError) as exc:
-            print(f"instancegenerator: {exc}", file=sys.stderr)
+        if not _write(CobotInstructInstanceGenerator(feedback_attempts=attempts), name, seed=args.seed,
+                      dataset_dir=args.dataset.resolve(),
+                      published_dir=args.published.resolve() if args.published else None,
+                      n_examples=args.examples, ablation_episodes=args.ablation_episodes,
+                      describers_dir=args.describers.resolve() if args.describers else None):
             return 2
-        exps = gen.instances["experiments"]
-        print(f"{path}: {len(exps)} experiments, {sum(len(e['game_instances']) for e in exps)} episodes")
     return 0
 
+
+def _write(gen: GameInstanceGenerator, name: str, **kwargs) -> bool:
+    """Write one instance file and say what it holds, or say in one line why it could not."""
+    try:
+        path = gen.generate(name, **kwargs)
+    except (UserError, KeyError, ValueError) as exc:
+        print(f"instancegenerator: {exc}", file=sys.stderr)
+        return False
+    exps = gen.instances["experiments"]
+    print(f"{path}: {len(exps)} experiments, {sum(len(e['game_instances']) for e in exps)} episodes")
+    return True
 
 if __name__ == "__main__":
     sys.exit(main())

@@ -21,6 +21,11 @@ target) and answers with the complete corrected code, run on a fresh board, up t
 An answer without code is then a failed attempt (parse_error) like any other; the episode is
 aborted only when no attempt held code. Every attempt's record is logged under
 `sartco_attempts`, the last one under `sartco_build` (scored).
+
+The paper protocol (game entry cobot_instruct_paper, in/instances_paper.json; instance field
+`protocol: "paper"`): the turns are the authors' user messages (`messages`), `mock` answers the
+episode's `mock_answers`, no answer is refused, and after the last one sartco.clem.paper scores
+every turn as the authors' scorer did and records our build beside it.
 """
 from __future__ import annotations
 
@@ -32,20 +37,22 @@ from sartco.clem.builder import Builder, rulebased_code
 from sartco.clem.building import ATTEMPTS_KEY, BuildRecord, build_for, finish_build, log_build, parse_failure_for
 from sartco.clem.feedback import feedback_for, max_attempts
 from sartco.clem.outcomes import log_outcome
+from sartco.clem.paper import PaperScorer, finish_paper, is_paper
 from sartco.clem.parsing import parse_code
-from sartco.clem.scoring import BuildScorer
 
 
 class CobotInstruct(DialogueGameMaster):
 
     def _on_setup(self, **instance):
         self.instance = instance
-        self.turns: list[str] = instance["turns"]
-        self.codes: list[str] = []
+        self.paper = is_paper(instance)
+        self.turns: list[str] = instance["messages"] if self.paper else instance["turns"]
+        self.codes: list[str] = []  # the code of each turn (paper protocol: the raw answers)
         self.attempts: list[BuildRecord] = []
         self.max_attempts = max_attempts(self.experiment)
-        self.builder = Builder(self.player_models[0], gold_turns=instance["gold_turns"], rulebased=self._follow,
-                               script=instance.get("script"))
+        script = instance.get("script") or (instance["mock_answers"] if self.paper else None)
+        self.builder = Builder(self.player_models[0], gold_turns=instance.get("gold_turns", ()),
+                               rulebased=None if self.paper else self._follow, script=script)
         self.add_player(self.builder, initial_prompt=instance.get("prompt") or None,
                         initial_context=self.turns[0])
 
@@ -63,7 +70,7 @@ class CobotInstruct(DialogueGameMaster):
         return rulebased_code(i["instructions"], i["task"], i.get("given_code", ""), rows, cols)
 
     def _parse_response(self, player: Player, response: str) -> str:
-        return parse_code(response)
+        return response if self.paper else parse_code(response)  # the paper protocol reads answers at the end
 
     def _advance_game(self, player: Player, code: str):
         if self.attempts:  # a repair: after the first attempt every answer is the complete program
@@ -73,6 +80,9 @@ class CobotInstruct(DialogueGameMaster):
             if len(self.codes) < len(self.turns):
                 self.set_context_for(self.builder, self.turns[len(self.codes)])
                 return
+        if self.paper:
+            finish_paper(self, self.instance, self.codes)
+            return
         self._end_attempt(build_for(self.instance, "\n".join(self.codes), turn_codes=self.codes))
 
     def _on_parse_error(self, error: ParseError):
@@ -97,4 +107,4 @@ class CobotInstruct(DialogueGameMaster):
 
 class CobotInstructBenchmark(benchmark.BuildBenchmark):
     master_class = CobotInstruct
-    scorer_class = BuildScorer
+    scorer_class = PaperScorer  # BuildScorer's scores, plus the paper's in a paper-protocol episode

@@ -4,7 +4,8 @@
 Who answers:
 - a clemcore model: the model (the game master parses its answer);
 - `mock`/`programmatic`: the episode's gold code, one turn at a time, as a fenced block (or, if
-  the instance carries a `script`, those raw answers verbatim: scripted episodes for tests);
+  the instance carries a `script`, those raw answers verbatim: scripted episodes for tests; the
+  paper protocol's episodes pass their `mock_answers`, the gold in the authors' label format);
 - `rulebased` (model registry entry, see sartco.clem.rulebased): the rule-based follower;
   a game whose instructions come from another player (cobot_describe) passes
   `mock_follows=True`, so that `mock` is the rule-based follower too (there is no gold answer

@@ -7,8 +7,10 @@
 Feedback (repair) experiments, several attempts: the last attempt decides, except that a last
 attempt without code loses (the builder did play) unless no attempt held code at all (aborted,
 as in the paper's protocol) - `outcome_of_attempts`.
-Games call `set_attempts_outcome` (through sartco.clem.building.finish_build) and `log_outcome`;
-nothing else maps codes to outcomes.
+The paper protocol (sartco.clem.paper) never aborts: its episode succeeds when every turn's ES
+does (`set_share_outcome`).
+Games call `set_attempts_outcome` (through sartco.clem.building.finish_build) or
+`set_share_outcome`, and `log_outcome`; nothing else maps codes to outcomes.
 """
 from __future__ import annotations
 
@@ -62,6 +64,11 @@ def outcome_of_attempts(categories) -> Outcome:
 def set_attempts_outcome(state, categories) -> Outcome:
     """Move a clemcore GameState to the outcome of these attempts (outcome_of_attempts)."""
     return _enter(state, outcome_of_attempts(categories))
+
+
+def set_share_outcome(state, share: float) -> Outcome:
+    """The paper protocol (never aborted): success when every turn succeeded (share 1), else lost."""
+    return _enter(state, Outcome.SUCCESS if share == 1 else Outcome.FAILURE)
 
 
 def _enter(state, outcome: Outcome) -> Outcome:

@@ -71,7 +71,11 @@ class BuildScorer(GameScorer):
         self.log_episode_score("Error Category", record.category)
         self.log_episode_score("Error Family", record.family)
         self.log_episode_score("Puts", record.puts)
-        self.log_episode_score(metrics.BENCH_SCORE, 100.0 * record.es)
+        self.log_episode_score(metrics.BENCH_SCORE, self.bench_score(interactions, record))
+
+    def bench_score(self, interactions: dict, record: BuildRecord) -> float:
+        """Main Score of a played episode: 100 x execution success of the build."""
+        return 100.0 * record.es
 
     def log_attempt_scores(self, interactions: dict, final: BuildRecord | None, aborted: bool) -> None:
         """ES@1, ES@N, Attempts, Max Attempts, Attempt Categories - only in feedback experiments."""

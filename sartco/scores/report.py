@@ -4,6 +4,8 @@ Reads every episode's scores.json (written by `clem score`) and its experiment.j
 as Markdown and CSV:
   table3.md / table3.csv      board type, object type, task, instruction source, model: EM, CB, ES
                               (the paper's Table 3; test-split experiments without ablation)
+  paper_table3.md / .csv      Table 3 in the paper protocol beside the paper's figures, then table3.md
+                              (sartco.scores.paper_table; only when there are paper-protocol episodes)
   ablations.md / ablations.csv  the val-split ablations (in-context examples, removed prompt sections)
   errors.md / errors.csv      episodes per error category, per model and experiment
   repair.md / repair.csv      feedback experiments (experiment field `attempts` N > 1), per model
@@ -72,7 +74,8 @@ def collect(results: Path, games: list[str] | None = None) -> list[dict]:
         game = exp.get("game_name") or exp_dir.parent.name
         if games and game not in games:
             continue
-        scores = _load(path).get("episode scores", {})
+        data = _load(path)
+        scores = data.get("episode scores", {})
         try:
             attempts = max_attempts(exp)
         except ValueError as exc:
@@ -88,6 +91,7 @@ def collect(results: Path, games: list[str] | None = None) -> list[dict]:
             "max_attempts": attempts, "feedback_of": exp.get("feedback_of", ""),
             "es1": _num(scores.get("ES@1", scores.get("Execution Success"))),
             "attempts_used": _num(scores.get("Attempts")),
+            "experiment_fields": exp, "scores": scores, "player_models": data.get("player_models"),
         })
     if not episodes:
         raise UserError(f"{results}: no scored SARTCo episodes (run `clem score -r {results}` first)")
@@ -241,6 +245,9 @@ def run(args: argparse.Namespace) -> int:
                               ["board_type", "object_type", "task", "source"]) + "\n"
     (out / "table3.md").write_text(md, encoding="utf-8")
     written += ["table3.md", "table3.csv"]
+    from .paper_table import write as write_paper_table  # the paper protocol's Table 3, beside the paper's
+    files, paper_md = write_paper_table(episodes, out, md)
+    written += files
     header, rows = ablations(episodes)
     if rows:
         _write_csv(out / "ablations.csv", header, rows)
@@ -266,5 +273,7 @@ def run(args: argparse.Namespace) -> int:
     md = "# Error categories (episodes per category)\n\n" + _md(header, [[r[h] for h in header] for r in rows])
     (out / "errors.md").write_text(md, encoding="utf-8")
     written += ["errors.md", "errors.csv"]
+    if paper_md:
+        print(paper_md)
     print(f"sartco report: {len(episodes)} episodes -> " + ", ".join(str(out / w) for w in written))
     return 0

@@ -1,0 +1,177 @@
+"""Table 3 in the paper protocol, beside the paper's own figures (part of `sartco report`).
+
+Reads the paper's Table 3 (`table3.json` in ../shared/sartco-data/paper-protocol, at run time)
+and the episodes of paper-protocol experiments (experiment field `protocol: "paper"`, game entry
+cobot_instruct_paper) from the rows of sartco.scores.report.collect, and writes
+  paper_table3.md / paper_table3.csv
+one line per Table 3 cell and instruction source, in the paper's order: the paper's EM, CB, ES for
+CodeLlama-34B, GPT-4 and Claude-3, then the same for each model of the results (the mean over the
+cell's episodes of "Paper EM", "Paper CB", "Paper ES", shares 0..1, as the paper prints them).
+The paper's model-written rows belong to the CodeLlama-written files (table3.json's note); the
+GPT-4- and Claude-written files have no figure in the paper. Cells in the results that Table 3
+does not have come last. A model run with other generation settings than the paper's
+(table3.json "settings": temperature 0, 250 new tokens; clemcore records them per episode in
+scores.json "player_models") is marked "(!)" and named under the table. The project-protocol
+Table 3 (report's table3.md) follows in the same file, so both are seen at one glance.
+"""
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from sartco.cli import UserError
+from sartco.instances.importer import SOURCE_ORDER
+from sartco.paper import PROTOCOL
+from sartco.program.gold import DEFAULT_DATA
+
+TABLE3 = DEFAULT_DATA / "paper-protocol" / "table3.json"
+PAPER_SCORES = {"em": "Paper EM", "cb": "Paper CB", "es": "Paper ES"}  # scores.json names (sartco.clem.paper logs them)
+CELL_KEYS = ("instructions", "board", "object", "task", "variant")
+MODEL_WRITTEN = "codellama"  # the source of the paper's model-written rows
+FLAG = "(!)"
+
+
+def load_table3(path: Path = TABLE3) -> dict:
+    try:
+        table = json.loads(Path(path).read_text(encoding="utf-8"))
+        generation(table)
+        for cell in table["cells"]:
+            _key({**cell, "source": _source(cell)}), dict(cell["scores"])
+    except (OSError, ValueError) as exc:
+        raise UserError(f"{path}: cannot read the paper's Table 3 ({exc})") from None
+    except (KeyError, TypeError) as exc:
+        raise UserError(f"{path}: not the paper's Table 3 (missing {exc})") from None
+    return table
+
+
+def generation(table: dict) -> dict:
+    """The paper's generation settings in clemcore's gen_args names."""
+    s = table["settings"]
+    return {"temperature": float(s["temperature"]), "max_tokens": int(s["max_new_tokens"])}
+
+
+def _source(cell: dict) -> str:
+    return cell["instructions"] if cell["instructions"] != "model" else MODEL_WRITTEN
+
+
+def _key(fields: dict) -> tuple:
+    return tuple(fields[k] for k in CELL_KEYS) + (fields["source"],)
+
+
+def paper_episodes(episodes: list[dict]) -> list[dict]:
+    """The report rows of paper-protocol episodes, with their cell, scores and generation settings."""
+    out = []
+    for e in episodes:
+        exp = e["experiment_fields"]
+        if exp.get("protocol") != PROTOCOL:
+            continue
+        scores = e["scores"]
+        models = e["player_models"] or {}
+        out.append({"model": e["model"], "instructions": exp.get("instructions", ""), "board": exp["board_type"],
+                    "object": exp["object_type"], "task": exp["task"], "variant": exp.get("variant", ""),
+                    "source": exp.get("source", ""),
+                    **{k: float(scores.get(name) or 0.0) for k, name in PAPER_SCORES.items()},
+                    "gen_args": [dict(m.get("gen_args") or {}) for m in models.values()]})
+    return out
+
+
+def settings_note(rows: list[dict], wanted: dict) -> dict[str, str]:
+    """model -> why its runs are not comparable with the paper's (absent when they are)."""
+    seen: dict[str, list] = {}
+    for r in rows:
+        for args in r["gen_args"] or [{}]:
+            got = {k: args.get(k) for k in wanted}
+            if got not in seen.setdefault(r["model"], []):
+                seen[r["model"]].append(got)
+    notes = {}
+    for model, settings in seen.items():
+        bad = [s for s in settings if any(s[k] is None or float(s[k]) != float(v) for k, v in wanted.items())]
+        if bad:
+            shown = "; ".join(", ".join(f"{k} {'not recorded' if v is None else v}" for k, v in s.items()) for s in bad)
+            notes[model] = f"run with {shown}"
+    return notes
+
+
+def table(table3: dict, rows: list[dict]) -> tuple[list[str], list[dict]]:
+    """Long rows: one per cell, source and model (the paper's models first)."""
+    paper_models = list(table3["models"])
+    cells = {}
+    for cell in table3["cells"]:
+        cells[_key({**cell, "source": _source(cell)})] = cell
+    means: dict[tuple, dict[str, list]] = {}
+    for r in rows:
+        key = _key(r)
+        cells.setdefault(key, None)
+        means.setdefault(key, {}).setdefault(r["model"], []).append(r)
+    models = sorted({r["model"] for r in rows})
+    positions = {k[:len(CELL_KEYS)]: i for i, k in reversed(list(enumerate(cells)))}
+
+    def order(key):  # Table 3's order; another source of the same cell beside it; other cells last
+        source = key[-1]
+        return (positions.get(key[:len(CELL_KEYS)], len(positions)), key[:len(CELL_KEYS)],
+                SOURCE_ORDER.index(source) if source in SOURCE_ORDER else len(SOURCE_ORDER), source)
+    out = []
+    for key in sorted(cells, key=order):
+        cell = cells[key]
+        base = dict(zip(CELL_KEYS + ("source",), key))
+        for m in paper_models:
+            scores = (cell or {}).get("scores", {}).get(m)
+            out.append({**base, "model": f"paper {table3['models'][m]}", "paper": 1, "episodes": "",
+                        **({k: v for k, v in zip(PAPER_SCORES, scores)} if scores else dict.fromkeys(PAPER_SCORES))})
+        for m in models:
+            group = means.get(key, {}).get(m, [])
+            out.append({**base, "model": m, "paper": 0, "episodes": len(group),
+                        **{k: (sum(r[k] for r in group) / len(group) if group else None) for k in PAPER_SCORES}})
+    return [*CELL_KEYS, "source", "model", "paper", "episodes", *PAPER_SCORES], out
+
+
+def markdown(header_rows: tuple[list[str], list[dict]], notes: dict[str, str], wanted: dict) -> str:
+    _, rows = header_rows
+    columns = []  # (model name, label) in first-seen order
+    for r in rows:
+        label = r["model"] + (f" {FLAG}" if r["model"] in notes else "")
+        if (r["model"], label) not in columns:
+            columns.append((r["model"], label))
+    lines: dict[tuple, dict] = {}
+    for r in rows:
+        lines.setdefault(tuple(r[k] for k in (*CELL_KEYS, "source")), {})[r["model"]] = r
+    head = ["instructions", "board", "object", "task", "source"] + [f"{label} {x}" for _, label in columns
+                                                                     for x in ("EM", "CB", "ES")]
+    out = ["| " + " | ".join(head) + " |", "|" + "|".join("---" for _ in head) + "|"]
+    for key, by_model in lines.items():
+        cell = [key[0], key[1], key[2], f"{key[3]} ({key[4]})", key[5]]
+        for model, _ in columns:
+            r = by_model.get(model)
+            cell += ["" if r is None or r[k] is None else f"{r[k]:.2f}" for k in PAPER_SCORES]
+        out.append("| " + " | ".join(cell) + " |")
+    text = ("## cobot_instruct_paper: Table 3 in the paper protocol\n\n"
+            "EM, CB (CodeBLEU > 0.5 pass rate), ES as shares 0..1, per turn and averaged over a cell's "
+            "episodes, as the paper measured them; the paper's figures are the first columns (\"paper ...\"), "
+            "the models of these results follow. The paper's model-written rows used the CodeLlama-written "
+            "instructions; GPT-4- and Claude-written instructions have no figure in the paper.\n\n")
+    text += "\n".join(out) + "\n"
+    if notes:
+        text += (f"\n{FLAG} not comparable with the paper, which generated with temperature "
+                 f"{wanted['temperature']:g} and at most {wanted['max_tokens']} new tokens "
+                 f"(`clem run -t {wanted['temperature']:g} -l {wanted['max_tokens']}`): "
+                 + "; ".join(f"{m}: {why}" for m, why in sorted(notes.items())) + ".\n")
+    return text
+
+
+def write(episodes: list[dict], out: Path, project_markdown: str, table3_path: Path = TABLE3):
+    """Write paper_table3.md (the paper-protocol table, then `project_markdown`) and .csv when the
+    results hold paper-protocol episodes. Returns (file names written, the paper table's Markdown
+    or None)."""
+    from .report import _write_csv
+
+    rows = paper_episodes(episodes)
+    if not rows:
+        return [], None
+    table3 = load_table3(table3_path)
+    wanted = generation(table3)
+    header, long_rows = table(table3, rows)
+    md = markdown((header, long_rows), settings_note(rows, wanted), wanted)
+    _write_csv(out / "paper_table3.csv", header, long_rows)
+    (out / "paper_table3.md").write_text("# SARTCo results: the paper's protocol and ours\n\n" + md + "\n"
+                                         + project_markdown, encoding="utf-8")
+    return ["paper_table3.md", "paper_table3.csv"], md
