@@ -8,6 +8,8 @@ live inside a game folder). Reuse these from any game whose player writes code:
                                        experiments: execution facts only, never the target)
 - builder.Builder                      the Builder player (mock = gold, rulebased, human)
 - scoring.BuildScorer                  scores.json from the recorded build
+- paper.finish_paper / PaperScorer     the paper protocol (cobot_instruct_paper): the authors' per-turn
+                                       reading and scores at the end of a dialogue, ours beside them
 - pictures.attach_all                  board pictures for transcripts, written at `clem score`
 - rulebased.RulebasedBackend           `-m rulebased` (the rule-based follower as a model)
 """

@@ -9,15 +9,17 @@ REPO = Path(__file__).resolve().parents[2]
 GAME_DIR = REPO / "games" / "cobot_instruct"
 
 
-def play(instances: list[dict], experiment: dict, results_dir: Path, model: str = "mock") -> list[dict]:
-    """Run the instances as one experiment; return, per instance, {"interactions", "scores"}."""
+def play(instances: list[dict], experiment: dict, results_dir: Path, model: str = "mock",
+         game: str = "cobot_instruct", gen_args: dict | None = None) -> list[dict]:
+    """Run the instances as one experiment of a game entry of games/cobot_instruct/clemgame.json;
+    return, per instance, {"interactions", "scores"}."""
     from clemcore import backends
     from clemcore.clemgame import (ExperimentFileSaver, GameBenchmark, GameBenchmarkCallbackList, GameInstances,
                                    GameSpec, InstanceFileSaver, InteractionsFileSaver, ResultsFolder)
     from clemcore.clemgame.runners import sequential
 
-    spec = GameSpec.from_directory(str(GAME_DIR))[0]
-    models = backends.load_models([model], dict(temperature=0.0, max_tokens=300))
+    spec = next(s for s in GameSpec.from_directory(str(GAME_DIR)) if s.game_name == game)
+    models = backends.load_models([model], gen_args or dict(temperature=0.0, max_tokens=300))
     folder = ResultsFolder(Path(results_dir), run_dir=backends.Model.to_identifier(models))
     infos = backends.Model.to_infos(models)
     callbacks = GameBenchmarkCallbackList([
@@ -43,7 +45,8 @@ import pytest  # noqa: E402
 
 @pytest.fixture
 def play_episodes(tmp_path):
-    """play_episodes(instances, experiment, model="mock") -> results per instance."""
-    def _play(instances, experiment, model="mock"):
-        return play(instances, experiment, tmp_path / "results", model)
+    """play_episodes(instances, experiment, model="mock", game="cobot_instruct", gen_args=None)
+    -> results per instance."""
+    def _play(instances, experiment, model="mock", **kwargs):
+        return play(instances, experiment, tmp_path / "results", model, **kwargs)
     return _play

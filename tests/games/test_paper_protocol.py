@@ -1,0 +1,150 @@
+"""The game entry cobot_instruct_paper through clemcore's real loop (runner, game master,
+sandbox, scorer) with mock and scripted answers, and `sartco report`'s paper table on the results."""
+import argparse
+import json
+
+import pytest
+
+from sartco.clem.paper import experiment_fields, instance_fields
+from sartco.program.gold import DEFAULT_DATA
+
+pytestmark = pytest.mark.skipif(not (DEFAULT_DATA / "published").is_dir(), reason="shared data missing")
+
+GAME = "cobot_instruct_paper"
+PAPER_SETTINGS = {"temperature": 0.0, "max_tokens": 250}
+VARIANTS = ["multi_turn", "single_turn_sc", "single_turn", "single_turn_hai", "regular", "regular_hai"]
+
+
+@pytest.fixture(scope="module")
+def paper_episodes():
+    """The first episode of each variant kind, as PaperEpisode.to_json() dicts."""
+    from sartco.paper.episodes import build_episodes
+    eps = build_episodes(files=["sb_so_test", "sb_so_test_hc", "rb_so_test", "rb_so_test_hc"], variants=VARIANTS)
+    first = {}
+    for ep in eps:
+        first.setdefault(ep.variant, ep.to_json())
+    assert list(first) == VARIANTS
+    return first
+
+
+def instances(episodes, scripts=None):
+    out = []
+    for game_id, ep in enumerate(episodes):
+        inst = {"game_id": game_id, **instance_fields(ep)}
+        if scripts and scripts[game_id] is not None:
+            inst["script"] = scripts[game_id]
+        out.append(inst)
+    return out
+
+
+def experiment(ep, name):
+    return {"name": name, **experiment_fields(ep)}
+
+
+def scores_of(result):
+    return result["scores"]["episode scores"]
+
+
+def paper_turns(result):
+    return result["interactions"]["sartco_paper"]["turns"]
+
+
+def test_mock_answers_the_authors_gold_es_1_em_0_on_functions(paper_episodes, play_episodes):
+    eps = list(paper_episodes.values())
+    results = play_episodes(instances(eps), experiment(eps[0], "paper_mock"), game=GAME, gen_args=PAPER_SETTINGS)
+    for ep, result in zip(eps, results):
+        s = scores_of(result)
+        em = 1.0 if ep["variant"] == "multi_turn" else 0.0  # a def/for line never matches (the paper's EM 0)
+        assert (s["Paper ES"], s["Paper CB"], s["Paper EM"]) == (1.0, 1.0, em), ep["variant"]
+        assert (s["Main Score"], s["Aborted"], s["Success"], s["Lose"]) == (100.0, 0, 1, 0)
+        assert s["Execution Success"] == 1 and s["Error Category"] == "success"  # our build of the same answers
+        n = len(ep["messages"])
+        assert len(paper_turns(result)) == n
+        assert [result["scores"]["round scores"][str(k)]["Paper ES"] for k in range(n)] == [1] * n
+        # every turn is the authors' user message, verbatim, and nothing else is sent
+        sent = [e["action"]["content"] for t in result["interactions"]["turns"] for e in t
+                if e["action"]["type"] == "send message"]
+        assert sent == ep["messages"]
+        events = [e for t in result["interactions"]["turns"] for e in t if e["action"]["type"] == "paper_turn"]
+        assert len(events) == n and events[0]["action"]["scores"]["reading"]
+
+
+def test_an_answer_without_labels_or_without_code_is_read_never_aborted(paper_episodes, play_episodes):
+    ep = paper_episodes["single_turn"]
+    gold = ep["gold"][0]["function"]  # the gold function and its usage line, no labels, no fences
+    scripts = [[gold], ["I am not sure how to write this."], [""]]
+    results = play_episodes(instances([ep] * 3, scripts), experiment(ep, "paper_unlabelled"), game=GAME)
+    plain, prose, empty = (scores_of(r) for r in results)
+    assert paper_turns(results[0])[0]["reading"] == {"function": gold.strip(), "usage": ""}
+    assert (plain["Paper ES"], plain["Paper EM"], plain["Main Score"], plain["Execution Success"]) == (1.0, 0.0, 100.0, 1)
+    for s, result in ((prose, results[1]), (empty, results[2])):
+        assert (s["Aborted"], s["Lose"], s["Paper ES"], s["Main Score"]) == (0, 1, 0.0, 0.0)
+        assert s["Error Category"] == "parse_error"  # our parser found no code; the episode still counts
+    assert paper_turns(results[1])[0]["category"] == "syntax_error"  # the prose was executed as the authors did
+    assert paper_turns(results[2])[0]["category"] == "parse_error"  # an empty answer fails every metric
+
+
+def test_one_wrong_turn_of_a_multi_turn_dialogue(paper_episodes, play_episodes):
+    ep = paper_episodes["multi_turn"]
+    n = len(ep["messages"])
+    assert n >= 2
+    script = list(ep["mock_answers"])
+    script[1] = "Output\nput(board, 'washer', 'red', 9, 9)\n"
+    [result] = play_episodes(instances([ep], [script]), experiment(ep, "paper_wrong_turn"), game=GAME)
+    s = scores_of(result)
+    assert s["Paper ES"] == pytest.approx((n - 1) / n) and s["Main Score"] == pytest.approx(100 * (n - 1) / n)
+    assert (s["Aborted"], s["Lose"]) == (0, 1)
+    turns = paper_turns(result)
+    assert [t["es"] for t in turns] == [k != 1 for k in range(n)]
+    assert turns[1]["category"] == "dimensions_mismatch" and turns[1]["em"] is False
+    assert result["scores"]["round scores"]["1"]["Paper ES"] == 0
+    assert (s["Execution Success"], s["Error Category"]) == (0, "dimensions_mismatch")  # our whole program fails
+
+
+def test_a_while_loop_fails_the_paper_es_of_its_turn_but_not_ours(paper_episodes, play_episodes):
+    ep = paper_episodes["regular"]
+    answer = ep["mock_answers"][0] + "while False:\n    pass\n"
+    [result] = play_episodes(instances([ep], [[answer]]), experiment(ep, "paper_while"), game=GAME)
+    s = scores_of(result)
+    [turn] = paper_turns(result)
+    assert (turn["es"], turn["category"], turn["message"]) == (False, "forbidden", "While loop not supported")
+    assert (s["Paper ES"], s["Main Score"], s["Aborted"]) == (0.0, 0.0, 0)
+    assert s["Execution Success"] == 1  # our protocol allows while loops under the step budget
+
+
+def _report(results_dir, out):
+    from sartco.scores import report
+    code = report.run(argparse.Namespace(results=results_dir, out=out, game=None))
+    assert code == 0
+    return (out / "paper_table3.md").read_text()
+
+
+def test_report_puts_the_run_beside_the_papers_figures(paper_episodes, play_episodes, tmp_path, capsys):
+    eps = [paper_episodes["multi_turn"], paper_episodes["regular_hai"]]
+    cells = {"multi_turn": "paper_sb_so_first_order_template", "regular_hai": "paper_rb_so_repetition_human"}
+    for ep in eps:
+        results = play_episodes(instances([ep]), experiment(ep, cells[ep["variant"]]), game=GAME,
+                                gen_args=PAPER_SETTINGS)
+    results_dir = results[0]["dir"].parents[3]
+    md = _report(results_dir, tmp_path / "scores")
+    printed = capsys.readouterr().out
+    assert "Table 3 in the paper protocol" in printed
+    table3 = json.loads((DEFAULT_DATA / "paper-protocol" / "table3.json").read_text())
+    [first] = [line for line in md.splitlines() if "first_order (multi_turn)" in line]
+    paper = table3["cells"][0]["scores"]
+    assert first.startswith("| template | simple | simple | first_order (multi_turn) | template | ")
+    assert first.endswith(" | " + " | ".join(f"{v:.2f}" for m in ("codellama", "gpt4", "claude") for v in paper[m])
+                          + " | 1.00 | 1.00 | 1.00 |")
+    human = [line for line in md.splitlines() if "repetition (regular_hai)" in line and " regular | simple |" in line]
+    assert human and human[0].endswith(" | 0.00 | 1.00 | 1.00 |")  # mock: EM 0, CB 1, ES 1
+    assert "(!)" not in md
+    assert "# SARTCo results (paper Table 3 layout)" in md  # the project-protocol table follows
+
+
+def test_report_flags_a_run_with_other_generation_settings(paper_episodes, play_episodes, tmp_path):
+    ep = paper_episodes["single_turn"]
+    [result] = play_episodes(instances([ep]), experiment(ep, "paper_sb_so_optimal_function_template"), game=GAME,
+                             gen_args={"temperature": 0.7, "max_tokens": 300})
+    md = _report(result["dir"].parents[3], tmp_path / "scores")
+    assert "mock (!) EM" in md
+    assert "mock: run with temperature 0.7, max_tokens 300" in md
