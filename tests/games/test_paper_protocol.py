@@ -148,3 +148,32 @@ def test_report_flags_a_run_with_other_generation_settings(paper_episodes, play_
     md = _report(result["dir"].parents[3], tmp_path / "scores")
     assert "mock (!) EM" in md
     assert "mock: run with temperature 0.7, max_tokens 300" in md
+
+
+def test_the_generator_makes_one_experiment_per_cell_with_the_papers_settings():
+    import importlib.util
+    from pathlib import Path
+
+    GAME_DIR = Path(__file__).resolve().parents[2] / "games" / "cobot_instruct"
+    spec = importlib.util.spec_from_file_location("cobot_instruct_instancegenerator", GAME_DIR / "instancegenerator.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    gen = module.PaperInstanceGenerator()
+    gen.on_generate(42, dataset_dir=GAME_DIR.parents[1] / "instances" / "v1")  # in memory: nothing written
+    exps = {e["name"]: e for e in gen.instances["experiments"]}
+    table3 = json.loads((DEFAULT_DATA / "paper-protocol" / "table3.json").read_text())
+    assert len(exps) == 15 and sum(len(e["game_instances"]) for e in exps.values()) == 1950
+    for cell in table3["cells"]:  # every Table 3 cell is an experiment (model-written: the CodeLlama files)
+        board = {("simple", "simple"): "sb_so", ("regular", "simple"): "rb_so", ("regular", "complex"): "rb_co"}[
+            cell["board"], cell["object"]]
+        source = cell["instructions"] if cell["instructions"] != "model" else "codellama"
+        exp = exps[f"paper_{board}_{cell['task']}_{source}"]
+        assert (exp["protocol"], exp["variant"], exp["split"]) == ("paper", cell["variant"], "test")
+        assert exp["generation"] == {"temperature": 0.0, "max_tokens": 250}
+        if board == "rb_so":
+            assert exp["examples_from"] == "published rb_so_train"
+        else:  # the authors' sb_so_train / rb_cho_train were never published
+            assert exp["examples_from"].startswith("generated v1 train split")
+        inst = exp["game_instances"][0]
+        assert inst["protocol"] == "paper" and inst["messages"] and len(inst["mock_answers"]) == len(inst["gold"])
+        assert inst["target"] and inst["task"] == cell["task"]
