@@ -126,3 +126,17 @@ def test_bad_data_folder_is_one_line(capsys, monkeypatch, tmp_path):
     assert code == 2 and out == [] and err.count("\n") == 1 and "no published SARTCo files" in err
     code, out, err = run(capsys, monkeypatch, ["score-responses", "--protocol", "sartco", "--data", str(tmp_path)], "")
     assert code == 2 and "no instances.json" in err
+
+
+def test_export_is_byte_identical_across_processes_and_hash_seeds():
+    import os
+    import subprocess
+    import sys
+    outputs = []
+    for seed in ("1", "2"):
+        env = {**os.environ, "PYTHONHASHSEED": seed}
+        done = subprocess.run([sys.executable, "-m", "sartco", "export-prompts", "--protocol", "paper",
+                               "--file", "sb_so_test_hc", "--file", "rb_cho_test"],
+                              capture_output=True, env=env, cwd=ROOT, check=True)
+        outputs.append(done.stdout)
+    assert outputs[0] == outputs[1] and outputs[0].count(b"\n") == 3 * 130
