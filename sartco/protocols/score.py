@@ -14,7 +14,7 @@ import sys
 from pathlib import Path
 
 from sartco.cli import UserError
-from sartco.paper.vocabulary import PROTOCOL, test_files
+from sartco.paper.vocabulary import PROTOCOL, published_test_files
 
 from . import add_common, our_episodes, paper_episodes, write_lines
 
@@ -123,7 +123,7 @@ def run(args) -> int:
         except LineError as exc:
             requests.append(LineError(f"line {n}: {exc}", exc.id))
     if args.protocol == PROTOCOL:
-        known = {f.stem for f in test_files()}
+        known = {f.stem for f in published_test_files()}
         files = sorted(needed_files(requests) & known)
         index = {e["id"]: e for e in paper_episodes(args.data, args.generated, files)} if files else {}
         scorer = score_paper
