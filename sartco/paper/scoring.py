@@ -115,7 +115,10 @@ def score_turn(prediction: dict, gold: dict, variant: str, given_function: str =
     if variant not in VARIANTS:
         raise ValueError(f"unknown variant {variant!r}; expected one of {', '.join(VARIANTS)}")
     keys = [k for k in gold if k in prediction and gold[k].strip()]
-    if not any(prediction.get(k, "").strip() for k in keys):
+    if not keys:
+        return TurnScore(False, False, False, str(ErrorCode.PARSE_ERROR),
+                         f"the prediction has none of the keys {', '.join(gold)}")
+    if not any(prediction[k].strip() for k in keys):
         return EMPTY
     em = all(exact_match(prediction[k], gold[k]) for k in keys)
     cb = all(codebleu_pass(prediction[k], gold[k]) for k in keys)

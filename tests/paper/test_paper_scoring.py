@@ -108,6 +108,10 @@ def test_es_single_turn_runs_the_function_text_not_the_usage():
 def test_keys_the_prediction_lacks_are_not_compared():
     got = score_turn({"function": DEF + "\n" + USE}, SINGLE_GOLD, "single_turn")
     assert (got.cb, got.es) == (True, True)
+    usage_only = score_turn({"usage": USE}, SINGLE_GOLD, "single_turn")   # nothing to execute
+    assert (usage_only.em, usage_only.cb, usage_only.es) == (True, True, False)
+    nothing = score_turn({"code": PUT}, {"output": PUT}, "multi_turn")
+    assert nothing == TurnScore(False, False, False, "parse_error", "the prediction has none of the keys output")
 
 
 # ----------------------------------------------------------------------------- dialogues
