@@ -56,17 +56,20 @@ def parse_line(text: str) -> dict:
     return {"id": eid, "responses": responses}
 
 
-def read_lines(inputs: list[Path]) -> list[str]:
-    texts = []
+def read_lines(inputs: list[Path]) -> list[tuple[str, str]]:
+    """(where, text) of every non-blank input line; where = "<file or stdin>:<line number>".
+    Lines end at "\n" only (JSON strings may hold other line separators, such as U+2028)."""
+    out = []
     for path in inputs or [Path("-")]:
         if str(path) == "-":
-            texts.append(sys.stdin.read())
+            name, text = "stdin", sys.stdin.read()
         else:
             try:
-                texts.append(path.read_text(encoding="utf-8"))
+                name, text = str(path), path.read_text(encoding="utf-8")
             except (OSError, UnicodeDecodeError) as exc:
                 raise UserError(f"{path}: cannot read ({exc})") from None
-    return [line for text in texts for line in text.splitlines() if line.strip()]
+        out.extend((f"{name}:{n}", line) for n, line in enumerate(text.split("\n"), 1) if line.strip())
+    return out
 
 
 # ----------------------------------------------------------------------------- the two scorers
@@ -115,13 +118,12 @@ def needed_files(requests: list) -> set[str]:
 
 
 def run(args) -> int:
-    lines = read_lines(args.inputs)
     requests: list[dict | LineError] = []
-    for n, text in enumerate(lines, 1):
+    for where, text in read_lines(args.inputs):
         try:
-            requests.append(parse_line(text))
+            requests.append({**parse_line(text), "where": where})
         except LineError as exc:
-            requests.append(LineError(f"line {n}: {exc}", exc.id))
+            requests.append(LineError(f"{where}: {exc}", exc.id))
     if args.protocol == PROTOCOL:
         known = {f.stem for f in published_test_files()}
         files = sorted(needed_files(requests) & known)
@@ -130,16 +132,16 @@ def run(args) -> int:
     else:
         index = {e["id"]: e for e in our_episodes(args.data)}
         scorer = score_ours
-    return write_lines(answer_line(n, request, index, scorer) for n, request in enumerate(requests, 1))
+    return write_lines(answer_line(request, index, scorer) for request in requests)
 
 
-def answer_line(n: int, request, index: dict, scorer) -> dict:
+def answer_line(request, index: dict, scorer) -> dict:
     if isinstance(request, LineError):
         return {"error": str(request)} if request.id is None else {"id": request.id, "error": str(request)}
     episode = index.get(request["id"])
     if episode is None:
-        return {"id": request["id"], "error": f"line {n}: unknown episode id {request['id']!r}"}
+        return {"id": request["id"], "error": f"{request['where']}: unknown episode id {request['id']!r}"}
     try:
         return scorer(episode, request["responses"])
     except ValueError as exc:  # LineError, or score_dialogue's: more responses than turns
-        return {"id": request["id"], "error": f"line {n}: {exc}"}
+        return {"id": request["id"], "error": f"{request['where']}: {exc}"}

@@ -17,7 +17,7 @@ def run(capsys, monkeypatch, argv, stdin=""):
 
 
 def lines(*items):
-    return "".join((item if isinstance(item, str) else json.dumps(item)) + "\n" for item in items)
+    return "".join((item if isinstance(item, str) else json.dumps(item, ensure_ascii=False)) + "\n" for item in items)
 
 
 def test_export_prompts_paper_matches_the_library(capsys, monkeypatch, by_id):
@@ -61,11 +61,13 @@ def test_score_responses_paper_malformed_lines_get_error_lines_in_place(capsys, 
         {"responses": ["x"]},
     )
     path = tmp_path / "more.jsonl"
-    path.write_text(lines({"id": e.id, "responses": ["```python\nwhile True:\n    pass\n```"]}))
+    path.write_text(lines({"id": e.id, "responses": ["```python\nwhile True:\n    pass\n```"]},
+                          {"id": e.id, "responses": ["Output\u2028" + e.gold[0]["output"]]}), encoding="utf-8")
     code, out, err = run(capsys, monkeypatch, ["score-responses", "--protocol", "paper", "-", str(path)], stdin)
-    assert code == 0 and err == "" and len(out) == 11
+    assert code == 0 and err == "" and len(out) == 12
     assert out[0]["es"] == 1.0 and out[0]["id"] == e.id
-    assert "not valid JSON" in out[1]["error"] and "line 2" in out[1]["error"]
+    assert "not valid JSON" in out[1]["error"] and out[1]["error"].startswith("stdin:2: ")
+    assert out[3]["error"].startswith("stdin:5: ")   # the blank line 3 is skipped but counted
     assert "expected a JSON object" in out[2]["error"]
     assert "unknown episode id" in out[3]["error"] and out[3]["id"].startswith("rb_so_test/")
     assert "list of strings" in out[4]["error"] and out[4]["id"] == e.id
@@ -75,6 +77,7 @@ def test_score_responses_paper_malformed_lines_get_error_lines_in_place(capsys, 
     assert "2 responses for 1 turn" in out[8]["error"]
     assert '"id"' in out[9]["error"]
     assert out[10]["turns"][0]["category"] == "forbidden" and out[10]["turns"][0]["message"] == "While loop not supported"
+    assert out[11]["id"] == e.id and out[11]["es"] == 1.0      # a U+2028 inside an answer does not end the line
 
 
 def our_instances():
