@@ -5,8 +5,9 @@
 
 Per turn, over the keys present in both gold and prediction (output; or function and usage):
 - EM: for each key with a non-empty gold, the gold's non-empty stripped lines equal the
-  prediction's, where every prediction line containing ":" is first replaced by the text after
-  its first ":" (stripped). A `def ...:` or `for ...:` line therefore never matches: EM is 0 on
+  prediction's non-empty stripped lines, where every one of those containing ":" is then
+  replaced by the text after its first ":" up to any second ":" (stripped; an empty result
+  stays as a line; see prediction_lines). A `def ...:` or `for ...:` line therefore never matches: EM is 0 on
   every function and repetition cell, as in the paper. An empty prediction fails.
 - CB: for each such key, CodeBLEU (sartco.scores.code_bleu: codebleu's calc_codebleu([gold],
   [pred], lang="python", weights 0.25 x 4) with its data-flow order fixed, see its docstring),
@@ -71,9 +72,14 @@ def gold_lines(text: str) -> list[str]:
 
 
 def prediction_lines(text: str) -> list[str]:
-    """Non-empty stripped lines, each line containing ":" first cut to the text after its first ":"."""
-    lines = (line.split(":", 1)[1] if ":" in line else line for line in text.split("\n"))
-    return [line.strip() for line in lines if line.strip()]
+    """The non-empty stripped lines; then each of them containing ":" is replaced by the text after
+    its first ":" up to a second one (`line.split(":")[1]`, as the authors' scorer), stripped.
+    A cut line never contains ":", so it never equals a gold `def ...:` / `for ...:` line, even
+    when the answer's label shares the line ("Function: def f(...):") -- the README's reason for
+    the paper's EM of 0 on every function cell. A line the cut leaves empty ("Here is the code:",
+    "# step 1:") stays in the list as "" (the empty lines are dropped before the cut)."""
+    lines = [line.strip() for line in text.split("\n") if line.strip()]
+    return [line.split(":")[1].strip() if ":" in line else line for line in lines]
 
 
 def exact_match(prediction: str, gold: str) -> bool:
