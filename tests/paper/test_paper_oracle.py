@@ -269,3 +269,35 @@ def test_em_cuts_a_line_between_its_first_and_second_colon():
     put = "put(board, 'washer', 'red', 7, 3)"
     assert exact_match(f"1: {put}", put) and exact_match(f"1: {put}: the washer", put)
     assert not exact_match("1: def f(board):", "def f(board):")
+
+
+def test_score_responses_command_scores_every_answer_style_as_the_readme(capsys, monkeypatch, episodes):
+    """`sartco score-responses --protocol paper` on every answer style of every variant, one line
+    each (multi_turn: the style in the first turn, the gold answer in the others)."""
+    import io
+    import json
+
+    from sartco.cli import main
+
+    requests, expected = [], []
+    for variant, style, answer, e in _cases(episodes):
+        responses = [answer] + list(e.mock_answers[1:])
+        requests.append({"id": e.id, "responses": responses})
+        family = VARIANTS[variant].family
+        if family == "multi_turn":
+            em, es = MULTI_TURN_EXPECTED[style]
+        else:
+            em, es = False, (SINGLE_TURN_ES if family == "single_turn" else REGULAR_ES)[style]
+        expected.append((variant, style, em, es, len(e.gold)))
+    monkeypatch.setattr("sys.stdin", io.StringIO("".join(json.dumps(r) + "\n" for r in requests)))
+    assert main(["score-responses", "--protocol", "paper"]) == 0
+    out = [json.loads(line) for line in capsys.readouterr().out.splitlines()]
+    assert len(out) == len(requests)
+    for line, request, (variant, style, em, es, n) in zip(out, requests, expected):
+        assert line["id"] == request["id"] and len(line["turns"]) == n, (variant, style)
+        assert (line["turns"][0]["em"], line["turns"][0]["es"]) == (em, es), (variant, style)
+        assert line["turns"][1:] == [{"em": True, "cb": True, "es": True, "category": None, "message": ""}] * (n - 1)
+        assert line["es"] == (es + n - 1) / n and line["em"] == (em + (n - 1) * (variant == "multi_turn")) / n
+        if not request["responses"][0].strip():
+            assert line["turns"][0] == {"em": False, "cb": False, "es": False, "category": "parse_error",
+                                        "message": "empty answer"}
