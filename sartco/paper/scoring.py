@@ -17,7 +17,8 @@ Per turn, over the keys present in both gold and prediction (output; or function
   the sample's gold object function + "\n" in front of both gold and prediction. A program
   containing the text "while" fails (the authors' scorer refused it: category `forbidden`,
   message "While loop not supported"); a program that raises fails with its ErrorCode; a board
-  other than the gold program's board fails with the mismatch category.
+  other than the gold program's board fails with the mismatch category; a gold program that
+  raises (never on the published data) leaves no board to equal: the turn fails.
 A turn succeeds on a metric when every compared key does. An empty answer fails all three
 (category parse_error, "empty answer"; the authors' scorer crashed on it).
 Per dialogue: each metric is the share of successful turns; Table 3 is the mean over a cell's
@@ -98,8 +99,8 @@ def es_program(code: str, given_function: str = "") -> str:
 
 
 @lru_cache(maxsize=4096)
-def _gold_cells(program: str) -> dict:
-    return execute(program).cells
+def _gold_run(program: str):
+    return execute(program)
 
 
 def execution(prediction: str, gold: str, given_function: str = "") -> tuple[bool, str | None, str]:
@@ -110,7 +111,10 @@ def execution(prediction: str, gold: str, given_function: str = "") -> tuple[boo
     ex = execute(program)
     if not ex.ok:
         return False, str(ErrorCode(ex.error)), ex.message or ""
-    cmp = compare(ex.cells, _gold_cells(es_program(gold, given_function)))
+    gold_run = _gold_run(es_program(gold, given_function))
+    if not gold_run.ok:  # no gold board to equal (the authors' scorer fails the turn too)
+        return False, str(ErrorCode(gold_run.error)), f"the gold program failed: {gold_run.message or ''}"
+    cmp = compare(ex.cells, gold_run.cells)
     if cmp.es:
         return True, None, ""
     return False, str(ErrorCode(cmp.category)), "the program built another board than the gold program"

@@ -162,3 +162,14 @@ def test_read_then_score_agree_with_score_dialogue(episodes):
     e = one(episodes, "sb_so_test_gpt4_mg", "single_turn_mg")
     answer = e.mock_answers[0]
     assert score_dialogue([answer], e).turns[0] == score_turn(read_answer(answer, e.variant), e.gold[0], e.variant)
+
+
+def test_es_fails_when_the_gold_program_itself_raises():
+    # README: the turn succeeds if the built board equals the gold board; a gold that raises
+    # builds none (the authors' scorer fails such a turn), so neither nothing nor a partial board
+    # equal to what the gold built before it raised succeeds
+    off_board = "put(board, 'nut', 'red', 9, 9)"
+    for prediction, gold in (("x = 1", off_board), (PUT, PUT + "\n" + off_board)):
+        got = score_turn({"output": prediction}, {"output": gold}, "multi_turn")
+        assert (got.es, got.category) == (False, "dimensions_mismatch"), prediction
+        assert got.message.startswith("the gold program failed")
