@@ -48,8 +48,8 @@ from sartco.instances.generate import load_dataset
 from sartco.instances.prompts import instruction_text
 from sartco.program.gold import DEFAULT_DATA, base_of, samples
 
-from .vocabulary import (INSTRUCTION_LABEL, LABELS, PROTOCOL, VARIANTS, template_name, test_files,
-                         training_stem, variants_of)
+from .vocabulary import (INSTRUCTION_LABEL, LABELS, PROTOCOL, VARIANTS, PublishedFile, published_test_files,
+                         template_name, training_stem, variants_of)
 
 DEFAULT_PUBLISHED = DEFAULT_DATA / "published"
 DEFAULT_GENERATED = Path(__file__).resolve().parents[2] / "instances" / "v1"
@@ -210,27 +210,32 @@ class _Pools:
         self.pools: dict[str, tuple[list[TrainItem], str]] = {}
         self.selected: dict[tuple, list[dict]] = {}
 
-    def pool(self, prefix: str, board: str, obj: str) -> tuple[list[TrainItem], str]:
-        if prefix not in self.pools:
+    def pool(self, file: PublishedFile) -> tuple[list[TrainItem], str]:
+        if file.prefix not in self.pools:
             families = {v.training: v.family for v in VARIANTS.values()
-                        if (v.family == "regular") == (board == "regular")}
-            path = self.published_dir / f"{training_stem(prefix)}.json"
+                        if (v.family == "regular") == (file.board == "regular")}
+            path = self.published_dir / f"{training_stem(file.prefix)}.json"
             if path.is_file():
-                self.pools[prefix] = (published_pool(_read(path), families), f"published {path.stem}")
+                where, origin, records = path.name, f"published {path.stem}", _read(path)
+                convert = published_pool
             else:
                 manifest, files = load_dataset(self.generated_dir)
-                name = f"{board}_{obj}_train.json"
+                name = f"{file.board}_{file.object}_train.json"
                 if name not in files:
                     raise UserError(f"{self.generated_dir}: no {name} (the train split that stands in for "
                                     f"the unpublished {path.name})")
                 version = manifest.get("version", self.generated_dir.name)
-                self.pools[prefix] = (generated_pool(files[name], families),
-                                      f"generated {version} train split (the authors' {path.stem} was never published)")
-        return self.pools[prefix]
+                where, records, convert = self.generated_dir / name, files[name], generated_pool
+                origin = f"generated {version} train split (the authors' {path.stem} was never published)"
+            try:
+                self.pools[file.prefix] = (convert(records, families), origin)
+            except (KeyError, TypeError, ValueError, AttributeError) as exc:
+                raise UserError(f"{where}: malformed training sample ({type(exc).__name__}: {exc})") from None
+        return self.pools[file.prefix]
 
-    def examples(self, prefix, board, obj, training, count, combo, seed) -> tuple[list[dict], str]:
-        pool, origin = self.pool(prefix, board, obj)
-        key = (prefix, training, count, combo, seed)
+    def examples(self, file: PublishedFile, training, count, combo, seed) -> tuple[list[dict], str]:
+        pool, origin = self.pool(file)
+        key = (file.prefix, training, count, combo, seed)
         if key not in self.selected:
             self.selected[key] = select(candidates(pool, training, count, combo, seed))
         return self.selected[key], origin
@@ -255,7 +260,7 @@ def build_episodes(published_dir: Path = DEFAULT_PUBLISHED, generated_dir: Path 
     files / variants: keep only these file stems / dialogue keys (unknown names are a UserError)."""
     published_dir, generated_dir = Path(published_dir), Path(generated_dir)
     data_dir = published_dir.parent
-    known = test_files()
+    known = published_test_files()
     if files is not None:
         unknown = sorted(set(files) - {f.stem for f in known})
         if unknown:
@@ -269,40 +274,41 @@ def build_episodes(published_dir: Path = DEFAULT_PUBLISHED, generated_dir: Path 
     gold_stems = sorted(p.stem for p in gold_dir.glob("*.json"))
     pools = _Pools(published_dir, generated_dir)
     episodes = []
-    for stem, prefix, board, obj, source in known:
-        if files is not None and stem not in files:
+    for file in known:
+        if files is not None and file.stem not in files:
             continue
-        keys = [v for v in variants_of(board, source) if variants is None or v in variants]
-        path = published_dir / f"{stem}.json"
+        keys = [v for v in variants_of(file.board, file.source) if variants is None or v in variants]
+        path = published_dir / f"{file.stem}.json"
         if not keys or not path.is_file():
             if files is not None and not path.is_file():
                 raise UserError(f"{path}: published test file missing")
             continue
-        base = base_of(stem, gold_stems)
+        base = base_of(file.stem, gold_stems)
         boards = _read(gold_dir / f"{base}.json") if base else {}
-        for board_type, sid, sample in samples(_read(path)):
+        for _, sid, sample in samples(_read(path)):
             for variant in keys:
                 try:
-                    episodes.append(_episode(pools, data_dir, stem, prefix, board, obj, source, sid, sample,
-                                             variant, boards.get(sid)))
+                    episodes.append(_episode(pools, data_dir, file, sid, sample, variant, boards.get(sid)))
                 except (KeyError, TypeError, IndexError) as exc:
                     raise UserError(f"{path.name} {sid}: malformed sample for {variant} ({type(exc).__name__}: {exc})") from None
     return episodes
 
 
-def _episode(pools: _Pools, data_dir: Path, stem, prefix, board, obj, source, sid, sample, variant, target) -> PaperEpisode:
+def _episode(pools: _Pools, data_dir: Path, file: PublishedFile, sid: str, sample: dict, variant: str,
+             target: dict | None) -> PaperEpisode:
     v = VARIANTS[variant]
     turns = sample["dialogues"][variant]["instructions"]
     texts = [t["<Programmer>"] for t in turns]
     codes = [editor_code(t["<Editor>"], v.family) for t in turns]
     _, _, count, combo, _ = sid.split("/")
-    seed = _stem(sample["seed_template"]) if board == "regular" else None
-    examples, origin = pools.examples(prefix, board, obj, v.training, count, combo, seed)
+    seed = _stem(sample["seed_template"]) if file.board == "regular" else None
+    examples, origin = pools.examples(file, v.training, count, combo, seed)
     template = _template(data_dir / "paper-protocol" / template_name(variant))
     messages = [first_message(template, sample, variant, examples, texts[0])] + [instruction(t) for t in texts[1:]]
     return PaperEpisode(
-        id=f"{stem}/{sid}/{variant}", file=stem, sample=sid, variant=variant,
-        cell={"instructions": v.instructions, "board": board, "object": obj, "task": v.task, "source": source},
+        id=f"{file.stem}/{sid}/{variant}", file=file.stem, sample=sid, variant=variant,
+        cell={"instructions": v.instructions, "board": file.board, "object": file.object, "task": v.task,
+              "source": file.source},
         messages=messages, gold=[gold_of(c, v.family) for c in codes],
         given_function=sample["code"]["function"] if v.family == "regular" else "",
         target=target if target is not None else {}, examples_from=origin,

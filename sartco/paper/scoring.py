@@ -5,8 +5,9 @@
 
 Per turn, over the keys present in both gold and prediction (output; or function and usage):
 - EM: for each key with a non-empty gold, the gold's non-empty stripped lines equal the
-  prediction's, where every prediction line containing ":" is first replaced by the text after
-  its first ":" (stripped). A `def ...:` or `for ...:` line therefore never matches: EM is 0 on
+  prediction's non-empty stripped lines, where every one of those containing ":" is then
+  replaced by the text after its first ":" up to any second ":" (stripped; an empty result
+  stays as a line; see prediction_lines). A `def ...:` or `for ...:` line therefore never matches: EM is 0 on
   every function and repetition cell, as in the paper. An empty prediction fails.
 - CB: for each such key, CodeBLEU (sartco.scores.code_bleu: codebleu's calc_codebleu([gold],
   [pred], lang="python", weights 0.25 x 4) with its data-flow order fixed, see its docstring),
@@ -16,7 +17,8 @@ Per turn, over the keys present in both gold and prediction (output; or function
   the sample's gold object function + "\n" in front of both gold and prediction. A program
   containing the text "while" fails (the authors' scorer refused it: category `forbidden`,
   message "While loop not supported"); a program that raises fails with its ErrorCode; a board
-  other than the gold program's board fails with the mismatch category.
+  other than the gold program's board fails with the mismatch category; a gold program that
+  raises (never on the published data) leaves no board to equal: the turn fails.
 A turn succeeds on a metric when every compared key does. An empty answer fails all three
 (category parse_error, "empty answer"; the authors' scorer crashed on it).
 Per dialogue: each metric is the share of successful turns; Table 3 is the mean over a cell's
@@ -71,9 +73,14 @@ def gold_lines(text: str) -> list[str]:
 
 
 def prediction_lines(text: str) -> list[str]:
-    """Non-empty stripped lines, each line containing ":" first cut to the text after its first ":"."""
-    lines = (line.split(":", 1)[1] if ":" in line else line for line in text.split("\n"))
-    return [line.strip() for line in lines if line.strip()]
+    """The non-empty stripped lines; then each of them containing ":" is replaced by the text after
+    its first ":" up to a second one (`line.split(":")[1]`, as the authors' scorer), stripped.
+    A cut line never contains ":", so it never equals a gold `def ...:` / `for ...:` line, even
+    when the answer's label shares the line ("Function: def f(...):") -- the README's reason for
+    the paper's EM of 0 on every function cell. A line the cut leaves empty ("Here is the code:",
+    "# step 1:") stays in the list as "" (the empty lines are dropped before the cut)."""
+    lines = [line.strip() for line in text.split("\n") if line.strip()]
+    return [line.split(":")[1].strip() if ":" in line else line for line in lines]
 
 
 def exact_match(prediction: str, gold: str) -> bool:
@@ -92,8 +99,8 @@ def es_program(code: str, given_function: str = "") -> str:
 
 
 @lru_cache(maxsize=4096)
-def _gold_cells(program: str) -> dict:
-    return execute(program).cells
+def _gold_run(program: str):
+    return execute(program)
 
 
 def execution(prediction: str, gold: str, given_function: str = "") -> tuple[bool, str | None, str]:
@@ -104,7 +111,10 @@ def execution(prediction: str, gold: str, given_function: str = "") -> tuple[boo
     ex = execute(program)
     if not ex.ok:
         return False, str(ErrorCode(ex.error)), ex.message or ""
-    cmp = compare(ex.cells, _gold_cells(es_program(gold, given_function)))
+    gold_run = _gold_run(es_program(gold, given_function))
+    if not gold_run.ok:  # no gold board to equal (the authors' scorer fails the turn too)
+        return False, str(ErrorCode(gold_run.error)), f"the gold program failed: {gold_run.message or ''}"
+    cmp = compare(ex.cells, gold_run.cells)
     if cmp.es:
         return True, None, ""
     return False, str(ErrorCode(cmp.category)), "the program built another board than the gold program"
@@ -115,7 +125,10 @@ def score_turn(prediction: dict, gold: dict, variant: str, given_function: str =
     if variant not in VARIANTS:
         raise ValueError(f"unknown variant {variant!r}; expected one of {', '.join(VARIANTS)}")
     keys = [k for k in gold if k in prediction and gold[k].strip()]
-    if not any(prediction.get(k, "").strip() for k in keys):
+    if not keys:
+        return TurnScore(False, False, False, str(ErrorCode.PARSE_ERROR),
+                         f"the prediction has none of the keys {', '.join(gold)}")
+    if not any(prediction[k].strip() for k in keys):
         return EMPTY
     em = all(exact_match(prediction[k], gold[k]) for k in keys)
     cb = all(codebleu_pass(prediction[k], gold[k]) for k in keys)

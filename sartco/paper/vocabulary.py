@@ -58,7 +58,7 @@ def instructions_kind(source: str) -> str:
     return source if source in ("template", "human") else "model"
 
 
-class TestFile(NamedTuple):
+class PublishedFile(NamedTuple):
     stem: str        # e.g. rb_so_test_hc
     prefix: str      # sb_so | rb_so | rb_cho
     board: str       # simple | regular
@@ -66,7 +66,7 @@ class TestFile(NamedTuple):
     source: str      # template | human | codellama | gpt4 | claude
 
 
-def test_files() -> list[TestFile]:
+def published_test_files() -> list[PublishedFile]:
     """Every published test file name with its board, object type and instruction source, in Table 3
     order: prefix (sb_so, rb_so, rb_cho), then source (template, human, codellama, gpt4, claude).
     Not every combination is published (rb_cho has no model-written file); callers keep those
@@ -75,7 +75,7 @@ def test_files() -> list[TestFile]:
     for prefix, (board, obj) in PREFIXES.items():
         for suffix, source in SOURCES.items():
             stem = f"{prefix}_{TEST_SPLIT}" + (f"_{suffix}" if suffix else "")
-            out.append(TestFile(stem, prefix, board, obj, source))
+            out.append(PublishedFile(stem, prefix, board, obj, source))
     return out
 
 

@@ -108,6 +108,10 @@ def test_es_single_turn_runs_the_function_text_not_the_usage():
 def test_keys_the_prediction_lacks_are_not_compared():
     got = score_turn({"function": DEF + "\n" + USE}, SINGLE_GOLD, "single_turn")
     assert (got.cb, got.es) == (True, True)
+    usage_only = score_turn({"usage": USE}, SINGLE_GOLD, "single_turn")   # nothing to execute
+    assert (usage_only.em, usage_only.cb, usage_only.es) == (True, True, False)
+    nothing = score_turn({"code": PUT}, {"output": PUT}, "multi_turn")
+    assert nothing == TurnScore(False, False, False, "parse_error", "the prediction has none of the keys output")
 
 
 # ----------------------------------------------------------------------------- dialogues
@@ -158,3 +162,14 @@ def test_read_then_score_agree_with_score_dialogue(episodes):
     e = one(episodes, "sb_so_test_gpt4_mg", "single_turn_mg")
     answer = e.mock_answers[0]
     assert score_dialogue([answer], e).turns[0] == score_turn(read_answer(answer, e.variant), e.gold[0], e.variant)
+
+
+def test_es_fails_when_the_gold_program_itself_raises():
+    # README: the turn succeeds if the built board equals the gold board; a gold that raises
+    # builds none (the authors' scorer fails such a turn), so neither nothing nor a partial board
+    # equal to what the gold built before it raised succeeds
+    off_board = "put(board, 'nut', 'red', 9, 9)"
+    for prediction, gold in (("x = 1", off_board), (PUT, PUT + "\n" + off_board)):
+        got = score_turn({"output": prediction}, {"output": gold}, "multi_turn")
+        assert (got.es, got.category) == (False, "dimensions_mismatch"), prediction
+        assert got.message.startswith("the gold program failed")
