@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # The main job (`make main`): both games with the built-in players over the test split, scored,
 # transcribed, evaluated and reported; ends by printing the results table.
-#   cobot_instruct  mock (gold code) on the template cells of Table 3 (generated dataset v1) and
-#                   on the human- and model-written cells (imported published data), plus the
-#                   val-split ablations that ship in in/instances.json; the feedback experiments
+#   cobot_instruct  mock (gold code) on the template cells of Table 3 (generated dataset v1);
+#                   each other kind of run under its own game name (games/cobot_instruct/clemgame.json),
+#                   so that clem eval scores it apart: cobot_instruct_published (the human- and
+#                   model-written cells, imported published data), cobot_instruct_ablations (val
+#                   split), cobot_instruct_feedback (execution feedback and repair)
 #   cobot_describe  mock describer (template instructions) + mock builder (the rule-based follower)
 # Settings (environment): RESULTS (results), MODEL (mock), SCORES (scores).
 set -euo pipefail
@@ -26,12 +28,14 @@ step "importing the published SARTCo data (derived from ../shared, not committed
 run sartco import "$SHARED" --out instances/published --quiet
 run python games/cobot_instruct/instancegenerator.py --published instances/published
 
-step "cobot_instruct: template cells and ablations (in/instances.json)"
+step "cobot_instruct: the template cells of Table 3 (in/instances.json)"
 run clem run -g cobot_instruct -m "$MODEL" -r "$RESULTS"
-step "cobot_instruct: human- and model-written cells (in/instances_published.json)"
-run clem run -g cobot_instruct -m "$MODEL" -i instances_published -r "$RESULTS"
-step "cobot_instruct: execution feedback and repair, beyond the paper (in/instances_feedback.json)"
-run clem run -g cobot_instruct -m "$MODEL" -i instances_feedback -r "$RESULTS"
+step "cobot_instruct_published: human- and model-written cells (in/instances_published.json)"
+run clem run -g cobot_instruct_published -m "$MODEL" -r "$RESULTS"
+step "cobot_instruct_ablations: val-split ablations (in/instances_ablations.json)"
+run clem run -g cobot_instruct_ablations -m "$MODEL" -r "$RESULTS"
+step "cobot_instruct_feedback: execution feedback and repair, beyond the paper (in/instances_feedback.json)"
+run clem run -g cobot_instruct_feedback -m "$MODEL" -r "$RESULTS"
 step "cobot_describe"
 run clem run -g cobot_describe -m "$MODEL" -r "$RESULTS"
 
