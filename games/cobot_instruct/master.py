@@ -98,3 +98,4 @@ class CobotInstruct(DialogueGameMaster):
 class CobotInstructBenchmark(benchmark.BuildBenchmark):
     master_class = CobotInstruct
     scorer_class = BuildScorer
+    episode_fields = {**benchmark.EPISODE_FIELDS, "turns": list, "gold_turns": list}  # read by _on_setup
