@@ -8,7 +8,9 @@ producing the in-context pattern ("Instruction: ... Output: ...") after their an
   (```text, ```json, ```output ...) is never code; an untagged block is code if it parses or
   has lines that look like Python;
 - beside fenced code: a call written outside the fences (a "Usage:" line, inline or bare) of a
-  function the fenced code defines but never calls is appended after the fenced code;
+  function the fenced code defines but never calls, with no other names in its arguments than
+  `board` and the fenced code's own (a signature in prose is not a usage), is appended after
+  the fenced code;
 - no fenced code: the labelled sections, else the lines that look like Python; inline code
   spans that hold a statement count as such lines.
 An answer in which no code is found raises ParseError (the episode is aborted). Code that is
@@ -205,9 +207,18 @@ def _usage_calls(fenced: str, outside: str) -> list[str]:
                 statements += [(node, line.strip()) for node in ast.parse(line.strip()).body]
             except SyntaxError:
                 continue
-    return [text for node, text in statements
-            if isinstance(node, ast.Expr) and isinstance(node.value, ast.Call)
-            and isinstance(node.value.func, ast.Name) and node.value.func.id in wanted]
+    # a call with other free names than board and the fenced code's own is the function's
+    # signature mentioned in prose ("`wn(board, colors, x, y)` places ..."), not a usage
+    known = {"board"} | set(re.findall(r"^(\w+)\s*=", fenced, re.MULTILINE))
+
+    def usage(node) -> bool:
+        if not (isinstance(node, ast.Expr) and isinstance(node.value, ast.Call)
+                and isinstance(node.value.func, ast.Name) and node.value.func.id in wanted):
+            return False
+        args = [*node.value.args, *(k.value for k in node.value.keywords)]
+        return all(n.id in known for arg in args for n in ast.walk(arg) if isinstance(n, ast.Name))
+
+    return [text for node, text in statements if usage(node)]
 
 
 def _labelled_sections(lines: list[str]) -> list[list[str]] | None:

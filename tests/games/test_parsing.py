@@ -87,6 +87,8 @@ STYLES = {
     "usage before the fence goes after it": (f"Usage: {USAGE}\n```python\n{FUNCTION}\n```", f"{FUNCTION}\n{USAGE}"),
     "usage inside and repeated outside: once": (f"```python\n{FUNCTION}\n{USAGE}\n```\nUsage: `{USAGE}`",
                                                 f"{FUNCTION}\n{USAGE}"),
+    "signature in prose is not a usage": (f"```python\n{FUNCTION}\n```\nThe function `wn(board, colors, x, y)` "
+                                          f"places a washer and a nut.\nUsage: `{USAGE}`", f"{FUNCTION}\n{USAGE}"),
     "outside call of another function is prose": (f"```python\n{FUNCTION}\n```\nYou could also `{PUT}`.", FUNCTION),
     # inline code when there is no block
     "bold label + inline code": (f"**Output:** `{PUT}`", PUT),
