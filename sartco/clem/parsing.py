@@ -6,7 +6,7 @@ producing the in-context pattern ("Instruction: ... Output: ...") after their an
 `parse_code` returns the code only, dedented:
 - fenced blocks: the Python ones (tag python/py/python3 or no tag); a block tagged otherwise
   (```text, ```json, ```output ...) is never code; an untagged block is code if it parses or
-  has lines that look like Python;
+  has lines that look like Python; a block repeated word for word counts once;
 - beside fenced code: a call written outside the fences (a "Usage:" line, inline or bare) of a
   function the fenced code defines but never calls, with no other names in its arguments than
   `board` and the fenced code's own (a signature in prose is not a usage), is appended after
@@ -280,7 +280,8 @@ def parse_code(text: str) -> str:
         raise ParseError("empty answer", response=text)
     lines = _cut_tail(str(text).replace("\r\n", "\n").replace("\r", "\n").split("\n"))
     blocks, outside = _split_fences(lines)
-    code = "\n".join(c for c in (_block_code(tag, block) for tag, block in blocks) if c)
+    # a block repeated word for word ("Final answer:" after the same code) counts once
+    code = "\n".join(dict.fromkeys(c for c in (_block_code(tag, block) for tag, block in blocks) if c))
     if code:
         code = "\n".join([code, *_usage_calls(code, _unfenced_code(outside))])
     else:  # no fences, or none with Python in it: the text outside them

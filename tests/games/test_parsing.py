@@ -76,6 +76,7 @@ STYLES = {
     "text block first": (f"Expected:\n```text\n{GRID}\n```\nCode:\n```python\n{PUT}\n```", PUT),
     "untagged code + untagged grid": (f"```\n{PUT}\n```\nResult:\n```\n{GRID}\n```", PUT),
     "py tag, capitalised": (f"```Python\n{FUNCTION}\n```\n```py\n{USAGE}\n```", f"{FUNCTION}\n{USAGE}"),
+    "the same block repeated as the final answer": (f"```python\n{PUT}\n```\nFinal answer:\n```python\n{PUT}\n```", PUT),
     "untagged broken code is still code": ("```\nput(board, 'washer', 'red', 7, 3\n```",
                                            "put(board, 'washer', 'red', 7, 3"),
     # the usage line written outside the fence, beside its fenced function
