@@ -1,17 +1,27 @@
 """Build the episodes of cobot_instruct from SARTCo datasets (docs/ARCHITECTURE.md, "Datasets").
 
-    python games/cobot_instruct/instancegenerator.py                   # in/instances.json
-                                                                       # + in/instances_feedback.json
+    python games/cobot_instruct/instancegenerator.py        # in/instances.json, instances_ablations.json,
+                                                            # instances_feedback.json, instances_smoke.json
     python games/cobot_instruct/instancegenerator.py --published instances/published
                                                # in/instances_published.json + ..._published_feedback.json
     python games/cobot_instruct/instancegenerator.py --protocol paper   # in/instances_paper.json
 
-in/instances.json (committed) comes from a generated dataset (default instances/v1):
-  - the template cells of the paper's Table 3 on the test split, one experiment each;
-  - the ablations on the val split: 0..10 in-context examples, and each prompt section removed.
-in/instances_published.json (gitignored: it embeds the published texts) comes from the imported
-published data (`sartco import ../shared/sartco-data/published --out instances/published`): the
-human-written and model-written cells of Table 3 (test split).
+One file per kind of run, each played under its own clemgame.json entry (its own game name, so
+its results, and clem eval's clemscore, never mix with the others):
+  in/instances.json            cobot_instruct: the template cells of the paper's Table 3, test split
+                               (the leaderboard number means these and nothing else);
+  in/instances_ablations.json  cobot_instruct_ablations: val split, 0..10 in-context examples and
+                               each prompt section removed;
+  in/instances_feedback.json   cobot_instruct_feedback: the Table 3 template cells with execution
+                               feedback and repair (beyond the paper, below);
+  in/instances_smoke.json      the first --smoke (2) episodes of each Table 3 template cell, the same
+                               episodes as in instances.json: `clem run -g cobot_instruct -i instances_smoke`;
+  in/instances_published.json  cobot_instruct_published (gitignored: it embeds the published texts),
+                               from the imported published data (`sartco import
+                               ../shared/sartco-data/published --out instances/published`): the
+                               human-written and model-written cells of Table 3 (test split);
+  in/instances_published_feedback.json  cobot_instruct_published_feedback (gitignored).
+The committed files are written from the generated dataset (default instances/v1).
 
 Experiment names: <board>_<object>_<task>_<source>[_<ablation>], board sb|rb (simple|regular
 board), object so|co (simple|complex object), task first_order | sequence_function |
@@ -29,13 +39,11 @@ generated dataset's train split), one experiment per cell, named paper_<board>_<
 as above, each recording protocol "paper", its variant, where its examples came from and the
 paper's generation settings (temperature 0, 250 tokens: run it with `clem run -t 0 -l 250`).
 
-Feedback experiments (beyond the paper, issue 7) go to a file of their own,
-in/instances_feedback.json (in/instances_published_feedback.json for the published cells), so
-that a plain `clem run -g cobot_instruct` plays the paper's protocol only and instances.json
-does not carry every test prompt twice: one experiment per Table 3 cell, `<cell>_feedback`,
-with the same episodes and the fields `attempts` (N, default 3: the first attempt plus up to
-N - 1 repairs after execution feedback, sartco.clem.feedback) and `feedback_of` (the cell's name).
-    clem run -g cobot_instruct -m mock -i instances_feedback [-e sb_so_first_order_template_feedback]
+Feedback experiments (beyond the paper, issue 7): one experiment per Table 3 cell,
+`<cell>_feedback`, with the same episodes and the fields `attempts` (N, default 3: the first
+attempt plus up to N - 1 repairs after execution feedback, sartco.clem.feedback) and
+`feedback_of` (the cell's name).
+    clem run -g cobot_instruct_feedback -m mock [-e sb_so_first_order_template_feedback]
 """
 from __future__ import annotations
 
@@ -58,6 +66,7 @@ N_EXAMPLES = 5          # in-context examples in the Table 3 experiments
 ABLATION_EPISODES = 10  # episodes per ablation experiment (val split)
 FEEDBACK_ATTEMPTS = 3   # attempts per episode in the feedback experiments
 FEEDBACK_SUFFIX = "_feedback"
+SMOKE_EPISODES = 2      # episodes per Table 3 cell in in/instances_smoke.json
 
 BOARDS = {"sb_so": ("simple", "simple"), "rb_so": ("regular", "simple"), "rb_co": ("regular", "complex")}
 # the cells of the paper's Table 3: (board/object, task, sources from the generated data, from the published data)
@@ -161,7 +170,9 @@ class CobotInstructInstanceGenerator(GameInstanceGenerator):
 
     def on_generate(self, seed: int, dataset_dir: Path, published_dir: Path | None = None,
                     n_examples: int = N_EXAMPLES, ablation_episodes: int = ABLATION_EPISODES,
-                    describers_dir: Path | None = None):
+                    describers_dir: Path | None = None, part: str = "cells", per_experiment: int | None = None):
+        """part: "cells" (the Table 3 cells, test split; per_experiment: only the first episodes of
+        each, a smoke file) or "ablations" (val split)."""
         manifest, files = load_dataset(dataset_dir)
         info = dataset_info(manifest, dataset_dir, seed, n_examples)
         self.instances["dataset"] = info
@@ -169,14 +180,8 @@ class CobotInstructInstanceGenerator(GameInstanceGenerator):
         if describers_dir is not None:
             self.add_described(describers_dir, info, pools, seed, n_examples)
             return
-        if published_dir is None:
-            for board, task, sources, _ in CELLS:
-                for source in sources:
-                    exp = self.experiment(f"{board}_{task}_{source}", board, task, source, "test", info)
-                    self.add_episodes(exp, records(files, board, "test"), task, source, pools[board], seed, n_examples)
-            if self.feedback_attempts is not None:
-                return  # the feedback experiments mirror the Table 3 cells only
-            for board, task, sources, _ in CELLS:
+        if part == "ablations":
+            for board, task, _, _ in CELLS:
                 val = records(files, board, "val")[:ablation_episodes]
                 for k in range(MAX_EXAMPLES + 1):
                     exp = self.experiment(f"{board}_{task}_template_examples_{k}", board, task, "template", "val",
@@ -188,6 +193,13 @@ class CobotInstructInstanceGenerator(GameInstanceGenerator):
                                           "val", info, {"kind": "without", "value": section})
                     self.add_episodes(exp, val, task, "template", pools[board], seed, n_examples, kept)
             return
+        if published_dir is None:
+            for board, task, sources, _ in CELLS:
+                for source in sources:
+                    exp = self.experiment(f"{board}_{task}_{source}", board, task, source, "test", info)
+                    items = records(files, board, "test")[:per_experiment]
+                    self.add_episodes(exp, items, task, source, pools[board], seed, n_examples)
+            return
         pub_manifest, pub_files = load_dataset(published_dir)
         pub_info = dataset_info(pub_manifest, published_dir, seed, n_examples, examples_from=info)
         self.instances["dataset"] = pub_info
@@ -195,7 +207,7 @@ class CobotInstructInstanceGenerator(GameInstanceGenerator):
             for source in sources:
                 items = [r for r in records(pub_files, board, "test") if source in r["instructions"]]
                 exp = self.experiment(f"{board}_{task}_{source}", board, task, source, "test", pub_info)
-                self.add_episodes(exp, items, task, source, pools[board], seed, n_examples)
+                self.add_episodes(exp, items[:per_experiment], task, source, pools[board], seed, n_examples)
 
     def add_described(self, describers_dir: Path, info: dict, pools: dict, seed: int, n_examples: int):
         """Experiments from a `sartco import-instructions` dataset: one per describer model (an
@@ -231,6 +243,8 @@ def main(argv=None) -> int:
     parser.add_argument("--seed", type=int, default=42, help="seed of the in-context example choice")
     parser.add_argument("--examples", type=int, default=N_EXAMPLES, help="in-context examples (Table 3 cells)")
     parser.add_argument("--ablation-episodes", type=int, default=ABLATION_EPISODES)
+    parser.add_argument("--smoke", type=int, default=SMOKE_EPISODES,
+                        help=f"episodes per experiment in in/instances_smoke.json (default {SMOKE_EPISODES})")
     parser.add_argument("--attempts", type=int, default=FEEDBACK_ATTEMPTS,
                         help=f"attempts per episode in the feedback experiments (default {FEEDBACK_ATTEMPTS})")
     args = parser.parse_args(argv)
@@ -241,16 +255,24 @@ def main(argv=None) -> int:
         return 0 if _write(PaperInstanceGenerator(), "instances_paper.json", seed=args.seed,
                            dataset_dir=args.dataset.resolve(),
                            published_dir=args.paper_data.resolve() if args.paper_data else None) else 2
-    stem = "instances" if args.published is None else "instances_published"
-    outputs = ((f"{stem}.json", None), (f"{stem}{FEEDBACK_SUFFIX}.json", args.attempts))
+    if args.smoke < 1:
+        print(f"instancegenerator: --smoke must be at least 1, not {args.smoke}", file=sys.stderr)
+        return 2
     if args.describers is not None:
-        outputs = (("instances_describers.json", None),)
-    for name, attempts in outputs:
+        outputs = [("instances_describers.json", None, {})]
+    elif args.published is not None:
+        outputs = [("instances_published.json", None, {}),
+                   (f"instances_published{FEEDBACK_SUFFIX}.json", args.attempts, {})]
+    else:
+        outputs = [("instances.json", None, {}), ("instances_ablations.json", None, {"part": "ablations"}),
+                   (f"instances{FEEDBACK_SUFFIX}.json", args.attempts, {}),
+                   ("instances_smoke.json", None, {"per_experiment": args.smoke})]
+    for name, attempts, part in outputs:
         if not _write(CobotInstructInstanceGenerator(feedback_attempts=attempts), name, seed=args.seed,
                       dataset_dir=args.dataset.resolve(),
                       published_dir=args.published.resolve() if args.published else None,
                       n_examples=args.examples, ablation_episodes=args.ablation_episodes,
-                      describers_dir=args.describers.resolve() if args.describers else None):
+                      describers_dir=args.describers.resolve() if args.describers else None, **part):
             return 2
     return 0
 

@@ -37,7 +37,7 @@ from sartco.clem.builder import Builder, rulebased_code
 from sartco.clem.building import ATTEMPTS_KEY, BuildRecord, build_for, finish_build, log_build, parse_failure_for
 from sartco.clem.feedback import feedback_for, max_attempts
 from sartco.clem.outcomes import log_outcome
-from sartco.clem.paper import PaperScorer, finish_paper, is_paper
+from sartco.clem.paper import PAPER_EPISODE_FIELDS, PaperScorer, finish_paper, is_paper
 from sartco.clem.parsing import parse_code
 
 
@@ -108,3 +108,8 @@ class CobotInstruct(DialogueGameMaster):
 class CobotInstructBenchmark(benchmark.BuildBenchmark):
     master_class = CobotInstruct
     scorer_class = PaperScorer  # BuildScorer's scores, plus the paper's in a paper-protocol episode
+    episode_fields = {**benchmark.EPISODE_FIELDS, "turns": list, "gold_turns": list}  # read by _on_setup
+
+    def fields_of(self, episode: dict) -> dict:
+        """A paper-protocol episode carries the authors' messages and gold answers instead of turns."""
+        return PAPER_EPISODE_FIELDS if is_paper(episode) else self.episode_fields

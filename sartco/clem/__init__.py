@@ -12,4 +12,7 @@ live inside a game folder). Reuse these from any game whose player writes code:
                                        reading and scores at the end of a dialogue, ours beside them
 - pictures.attach_all                  board pictures for transcripts, written at `clem score`
 - rulebased.RulebasedBackend           `-m rulebased` (the rule-based follower as a model)
+- packaged                             the backends and model entries in clem/backends/ that
+                                       clemcore finds wherever sartco is installed
+- benchmark.BuildBenchmark             the GameBenchmark base; checks the instance file up front
 """

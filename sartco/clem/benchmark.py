@@ -9,17 +9,120 @@ import this module, not the class, into a master.py:
     class MyGameBenchmark(benchmark.BuildBenchmark):
         master_class = MyGameMaster
         scorer_class = MyScorer
+        episode_fields = {**benchmark.EPISODE_FIELDS, "turns": list}   # what the master reads
+
+Instance files are checked up front. `clem run` loads the models, then the game (this class),
+then the instance file, and plays; it hands the game neither the instance rows before playing
+nor the `-e` experiment name, and logs any exception with a traceback and goes on (an unknown
+experiment is "0 rows", exit 0). So under `clem run` the constructor reads the instance file
+itself (the one clemgame.json or `-i` names) and the `-e` option from clem's command line, and
+before any model is asked stops with one line naming the file, the experiment and the field
+(exit code 2): missing or truncated file, no experiments, an episode without a field the master
+reads or with a field of the wrong JSON type, an unknown experiment name (with the list).
 """
 from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
 
 from clemcore.clemgame import GameBenchmark
 
 from .pictures import attach_all
 
+# the fields every build episode needs (sartco.clem.episodes.board_fields, read by
+# sartco.clem.building and the scorer), with their JSON types
+EPISODE_FIELDS = {"game_id": int, "task": str, "rows": int, "cols": int, "target": dict, "given_code": str,
+                  "gold_code": str}
+_JSON_TYPE = {int: "a number", str: "a string", dict: "an object", list: "a list"}
+
+
+class InstanceFileError(Exception):
+    """An instance file a game cannot play; the message is one line naming file, experiment, field."""
+
+
+def check_instances(path: str, fields, experiment: str | None = None) -> int:
+    """Check an instance file (clemcore's layout: {"experiments": [{"name", "game_instances":
+    [{...}]}]}); return the number of episodes that `experiment` (None: all) selects. `fields`:
+    field -> JSON type every episode must have, or a function of the episode giving that dict."""
+    fields_of = fields if callable(fields) else (lambda _episode: fields)
+    try:
+        with open(path, encoding="utf-8") as f:
+            data = json.load(f)
+    except FileNotFoundError:
+        folder = os.path.dirname(path)
+        found = sorted(n[:-5] for n in os.listdir(folder) if n.endswith(".json")) if os.path.isdir(folder) else []
+        raise InstanceFileError(f"{path}: no such instance file (files in {folder}: {', '.join(found) or 'none'})")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise InstanceFileError(f"{path}: cannot read ({exc})")
+    except json.JSONDecodeError as exc:
+        raise InstanceFileError(f"{path}: not valid JSON, truncated or broken at line {exc.lineno} column "
+                                f"{exc.colno} ({exc.msg})")
+    experiments = data.get("experiments") if isinstance(data, dict) else None
+    if not isinstance(experiments, list) or not experiments:
+        raise InstanceFileError(f"{path}: no 'experiments' list (expected {{\"experiments\": [...]}})")
+    names = []
+    for k, exp in enumerate(experiments):
+        if not isinstance(exp, dict) or not isinstance(exp.get("name"), str):
+            raise InstanceFileError(f"{path}: experiment {k}: no 'name'")
+        name = exp["name"]
+        names.append(name)
+        episodes = exp.get("game_instances")
+        if not isinstance(episodes, list):
+            raise InstanceFileError(f"{path}: experiment {name}: no 'game_instances' list")
+        for i, episode in enumerate(episodes):
+            where = f"{path}: experiment {name}, episode {i}"
+            if not isinstance(episode, dict):
+                raise InstanceFileError(f"{where}: not an object")
+            if "game_id" in episode:
+                where = f"{path}: experiment {name}, game_id {episode['game_id']}"
+            for field, kind in fields_of(episode).items():
+                if field not in episode:
+                    raise InstanceFileError(f"{where}: missing field '{field}'")
+                value = episode[field]
+                if not isinstance(value, kind) or (kind is int and isinstance(value, bool)):
+                    raise InstanceFileError(f"{where}: field '{field}' is {type(value).__name__} "
+                                            f"{json.dumps(value)[:40]}, expected {_JSON_TYPE.get(kind, kind.__name__)}")
+    if experiment is not None and experiment not in names:
+        raise InstanceFileError(f"{path}: no experiment '{experiment}' (experiments: {', '.join(names)})")
+    return sum(len(e["game_instances"]) for e in experiments if experiment in (None, e["name"]))
+
+
+def clem_run_experiment(argv: list[str]) -> tuple[bool, str | None]:
+    """(is this process `clem run`?, its -e experiment name or None), read from clem's command line."""
+    if not argv or os.path.basename(argv[0]) not in ("clem", "clem.exe"):
+        return False, None
+    parser = argparse.ArgumentParser(add_help=False)
+    parser.add_argument("command", nargs="?")
+    parser.add_argument("-e", "--experiment_name", default=None)
+    try:
+        args, _ = parser.parse_known_args(argv[1:])
+    except SystemExit:  # clem's own parser reports the command line's mistakes
+        return False, None
+    return args.command == "run", args.experiment_name
+
 
 class BuildBenchmark(GameBenchmark):
     master_class = None   # a DialogueGameMaster subclass: (game_spec, experiment, player_models)
     scorer_class = None   # a GameScorer subclass: (game_name, experiment, game_instance)
+    episode_fields = EPISODE_FIELDS  # field -> JSON type every episode of the instance file must have
+
+    def __init__(self, game_spec):
+        super().__init__(game_spec)
+        running, experiment = clem_run_experiment(sys.argv)
+        if running:
+            name = getattr(game_spec, "instances", None) or "instances"
+            path = os.path.join(game_spec.game_path, "in", name if name.endswith(".json") else f"{name}.json")
+            try:
+                check_instances(path, self.fields_of, experiment)
+            except InstanceFileError as error:
+                print(f"clem run -g {game_spec.game_name}: {error}", file=sys.stderr)
+                raise SystemExit(2) from None  # not an Exception: clem's loop does not log and go on
+
+    def fields_of(self, episode: dict) -> dict:
+        """The fields (name -> JSON type) the master reads from this episode."""
+        return self.episode_fields
 
     def create_game_master(self, experiment: dict, player_models):
         return self.master_class(self.game_spec, experiment, player_models)

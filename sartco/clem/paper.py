@@ -20,6 +20,7 @@ from sartco.paper import PROTOCOL
 from sartco.scores.paper_table import PAPER_SCORES, generation, load_table3
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
 
+from .benchmark import EPISODE_FIELDS
 from .building import build_for, log_build, parse_failure_for
 from .outcomes import set_share_outcome
 from .parsing import ParseError, parse_code
@@ -27,6 +28,9 @@ from .scoring import BuildScorer
 
 PAPER_KEY = "sartco_paper"     # interactions.json: {"em", "cb", "es", "turns": [...]}
 PAPER_EVENT = "paper_turn"     # one GM->GM event per turn: what the authors' scorer read and scored
+# what cobot_instruct's master and scorer read from a paper episode (checked before clem run plays)
+PAPER_EPISODE_FIELDS = {**EPISODE_FIELDS, "protocol": str, "variant": str, "messages": list, "mock_answers": list,
+                        "gold": list, "given_function": str}
 
 
 def is_paper(fields: dict) -> bool:

@@ -1,13 +1,24 @@
-"""Find the code in a builder's answer.
+"""Find the code in a builder's answer (our protocol; the paper protocol keeps the authors' reading).
 
 Real answers wrap code in markdown fences, in labels (Output:, Function:, Usage:, Code:), in
-prose ("Sure! Here is the code: ..."), and small models go on producing the in-context pattern
-("Instruction: ... Output: ...") after their answer. `parse_code` returns the code only, dedented;
-an answer in which no code is found raises ParseError (the episode is aborted). Code that is found
-but does not compile is *not* a parse error: it is executed and lost as syntax_error.
+prose ("Sure! Here is the code: ..."), in inline code (`put(board, ...)`), and small models go on
+producing the in-context pattern ("Instruction: ... Output: ...") after their answer.
+`parse_code` returns the code only, dedented:
+- fenced blocks: the Python ones (tag python/py/python3 or no tag); a block tagged otherwise
+  (```text, ```json, ```output ...) is never code; an untagged block is code if it parses or
+  has lines that look like Python; a block repeated word for word counts once;
+- beside fenced code: a call written outside the fences (a "Usage:" line, inline or bare) of a
+  function the fenced code defines but never calls, with no other names in its arguments than
+  `board` and the fenced code's own (a signature in prose is not a usage), is appended after
+  the fenced code;
+- no fenced code: the labelled sections, else the lines that look like Python; inline code
+  spans that hold a statement count as such lines.
+An answer in which no code is found raises ParseError (the episode is aborted). Code that is
+found but does not compile is *not* a parse error: it is executed and lost as syntax_error.
 """
 from __future__ import annotations
 
+import ast
 import re
 import textwrap
 
@@ -36,6 +47,8 @@ _LABEL = re.compile(
 _TAIL = re.compile(r"^\s*(?:#+\s*)?(?:\*\*|__)?\s*(?:instructions?|<programmer>|programmer|input)\s*(?:\*\*|__)?\s*(?::|$)",
                    re.IGNORECASE)
 _FENCE = re.compile(r"^\s*(`{3,}|~{3,})\s*([\w+-]*)\s*$")
+_PYTHON_TAGS = {"python", "python3", "py", "py3"}
+_INLINE = re.compile(r"(?<!`)`([^`\n]+)`(?!`)")  # `code` in a line of prose
 
 _KEYWORD_LINE = re.compile(
     r"""^\s*(?:
@@ -135,23 +148,77 @@ def _cut_tail(lines: list[str]) -> list[str]:
     return out
 
 
-def _fenced_blocks(lines: list[str]) -> list[list[str]] | None:
-    """The contents of the markdown fences (an unclosed last fence runs to the end), or None."""
-    blocks: list[list[str]] = []
+def _split_fences(lines: list[str]) -> tuple[list[tuple[str, list[str]]], list[str]]:
+    """The markdown fences as (language tag, lowercased; "" for none, contents) (an unclosed last
+    fence runs to the end), and the lines outside them."""
+    blocks: list[tuple[str, list[str]]] = []
+    outside: list[str] = []
     current: list[str] | None = None
+    tag = ""
     for line in lines:
-        if _FENCE.match(line):
+        m = _FENCE.match(line)
+        if m:
             if current is None:
-                current = []
+                current, tag = [], m.group(2).lower()
             else:
-                blocks.append(current)
+                blocks.append((tag, current))
                 current = None
             continue
-        if current is not None:
-            current.append(line)
+        (outside if current is None else current).append(line)
     if current:
-        blocks.append(current)
-    return blocks if blocks else None
+        blocks.append((tag, current))
+    return blocks, outside
+
+
+def _block_code(tag: str, block: list[str]) -> str:
+    """The code of one fenced block: "" for a block tagged with another language than Python, or
+    an untagged block with nothing that looks like Python (a grid, the expected output)."""
+    if tag and tag not in _PYTHON_TAGS:
+        return ""
+    # a label inside a fence ("Output:\nput(...)"): keep what follows it
+    labelled = _labelled_sections(block)
+    code = _clean([ln for sec in labelled for ln in sec] if labelled else block)
+    if tag or not code:
+        return code
+    looks = _clean(_code_lines(code.split("\n")))
+    if not looks:
+        return ""
+    try:
+        ast.parse(code)
+    except SyntaxError:
+        return looks
+    return code
+
+
+def _usage_calls(fenced: str, outside: str) -> list[str]:
+    """The top-level calls in `outside` of functions that `fenced` defines but never calls at its
+    top level: the usage line a model writes after (or before) the fence of its function."""
+    defined = set(re.findall(r"^def\s+(\w+)\s*\(", fenced, re.MULTILINE))
+    called = set(re.findall(r"^(\w+)\s*\(", fenced, re.MULTILINE)) - {"def"}
+    wanted = defined - called
+    if not wanted or not outside:
+        return []
+    try:
+        statements = [(node, ast.get_source_segment(outside, node)) for node in ast.parse(outside).body]
+    except SyntaxError:  # one statement per line then
+        statements = []
+        for line in outside.split("\n"):
+            try:
+                statements += [(node, line.strip()) for node in ast.parse(line.strip()).body]
+            except SyntaxError:
+                continue
+    # a call with other free names than board and the fenced code's own is the function's
+    # signature mentioned in prose ("`wn(board, colors, x, y)` places ..."), not a usage
+    known = {"board"} | set(re.findall(r"^(\w+)\s*=", fenced, re.MULTILINE))
+
+    def usage(node) -> bool:
+        if not (isinstance(node, ast.Expr) and isinstance(node.value, ast.Call)
+                and isinstance(node.value.func, ast.Name) and node.value.func.id in wanted):
+            return False
+        args = [*node.value.args, *(k.value for k in node.value.keywords)]
+        return all(n.id in known for arg in args for n in ast.walk(arg) if isinstance(n, ast.Name))
+
+    return [text for node, text in statements if usage(node)]
 
 
 def _labelled_sections(lines: list[str]) -> list[list[str]] | None:
@@ -171,14 +238,35 @@ def _labelled_sections(lines: list[str]) -> list[list[str]] | None:
     return sections if sections else None
 
 
-def _strip_inline_backticks(lines: list[str]) -> list[str]:
+def _inline_code(lines: list[str]) -> list[str]:
+    """A line holding inline code spans that are statements (`put(board, ...)`) is replaced by
+    those statements, one per line, after the line's label if it has one; other lines stay."""
     out = []
     for line in lines:
-        s = line.strip()
-        if len(s) > 2 and s.startswith("`") and s.endswith("`") and not s.startswith("``"):
-            line = line.replace("`", "")
-        out.append(line)
+        label = _LABEL.match(line)
+        head, rest = (line[:label.start("rest")], label.group("rest")) if label else ("", line)
+        spans = [span.strip() for span in _INLINE.findall(rest)]
+        code = [span for span in spans if _KEYWORD_LINE.match(span) or _STATEMENT_LINE.match(span)]
+        if not code:
+            out.append(line)
+        elif head.strip():
+            out += [head.rstrip()] + code
+        else:
+            indent = line[:len(line) - len(line.lstrip())]
+            out += [indent + span for span in code]
     return out
+
+
+def _unfenced_code(lines: list[str]) -> str:
+    """The code of text without fences: the labelled sections, else the lines that look like Python."""
+    lines = _inline_code(lines)
+    sections = _labelled_sections(lines)
+    parts = []
+    for chunk in sections if sections is not None else [lines]:
+        code = _clean(_code_lines(textwrap.dedent("\n".join(chunk)).split("\n")))
+        if code:
+            parts.append(code)
+    return "\n".join(parts)
 
 
 def _clean(lines: list[str]) -> str:
@@ -190,27 +278,14 @@ def parse_code(text: str) -> str:
     """The code in an answer, dedented and stripped; raises ParseError if there is none."""
     if text is None or not str(text).strip():
         raise ParseError("empty answer", response=text)
-    lines = _strip_inline_backticks(_cut_tail(str(text).replace("\r\n", "\n").replace("\r", "\n").split("\n")))
-    fenced = _fenced_blocks(lines)
-    if fenced is not None:
-        parts = []
-        for block in fenced:
-            # a label inside a fence ("Output:\nput(...)"): keep what follows it
-            labelled = _labelled_sections(block)
-            body = [ln for sec in labelled for ln in sec] if labelled else block
-            code = _clean(body)
-            if code:
-                parts.append(code)
-        code = "\n".join(parts)
-    else:
-        sections = _labelled_sections(lines)
-        chunks = sections if sections is not None else [lines]
-        parts = []
-        for chunk in chunks:
-            code = _clean(_code_lines(textwrap.dedent("\n".join(chunk)).split("\n")))
-            if code:
-                parts.append(code)
-        code = "\n".join(parts)
+    lines = _cut_tail(str(text).replace("\r\n", "\n").replace("\r", "\n").split("\n"))
+    blocks, outside = _split_fences(lines)
+    # a block repeated word for word ("Final answer:" after the same code) counts once
+    code = "\n".join(dict.fromkeys(c for c in (_block_code(tag, block) for tag, block in blocks) if c))
+    if code:
+        code = "\n".join([code, *_usage_calls(code, _unfenced_code(outside))])
+    else:  # no fences, or none with Python in it: the text outside them
+        code = _unfenced_code(outside)
     if not code.strip():
         raise ParseError("no code found in the answer", response=text)
     return code

@@ -1,7 +1,7 @@
 """The clemcore backend that makes the rule-based follower selectable as a model: `clem run -g
-cobot_instruct -m rulebased`. Registered by the repository's model_registry.json entry
-{"model_name": "rulebased", "backend": "rulebased"} and the one-line rulebased_api.py in the
-repository root (clemcore looks for `<backend>_api.py` in the working directory).
+cobot_instruct -m rulebased`. Registered wherever sartco is installed by the packaged entry
+{"model_name": "rulebased", "backend": "rulebased"} and backend file in sartco/clem/backends
+(sartco.clem.packaged), beside the user's own model_registry.json.
 
 The model is a CustomResponseModel, so clemcore's Player calls the game's
 `Builder._custom_response`, which asks sartco.follower instead of returning the gold code.

@@ -3,7 +3,8 @@
 Reads every episode's scores.json (written by `clem score`) and its experiment.json, and writes,
 as Markdown and CSV:
   table3.md / table3.csv      board type, object type, task, instruction source, model: EM, CB, ES
-                              (the paper's Table 3; test-split experiments without ablation)
+                              (the paper's Table 3; test-split experiments without ablation; the
+                              cobot_instruct_published rows under cobot_instruct, TABLE3_GAME)
   paper_table3.md / .csv      Table 3 in the paper protocol beside the paper's figures, then table3.md
                               (sartco.scores.paper_table; only when there are paper-protocol episodes)
   ablations.md / ablations.csv  the val-split ablations (in-context examples, removed prompt sections)
@@ -31,6 +32,10 @@ from sartco.instances.importer import SOURCE_ORDER
 from sartco.instances.prompts import TASKS as TASK_ORDER
 from sartco.world import ErrorCode
 
+# clemgame entries whose cells are rows of another game's Table 3 (the published human- and
+# model-written instructions beside the template ones, as in the paper); every other game name
+# (cobot_instruct_ablations, _feedback, ...) is reported under its own name
+TABLE3_GAME = {"cobot_instruct_published": "cobot_instruct"}
 TASK_NAMES = {"first_order": "first-order (multi-turn)", "sequence_function": "function from puts",
               "optimal_function": "optimal function", "repetition": "repetition"}
 
@@ -126,7 +131,8 @@ def table3(episodes: list[dict]) -> tuple[list[str], list[dict]]:
     for e in episodes:
         if e["ablation"] or e["max_attempts"] > 1:
             continue
-        groups[(e["game"], e["board_type"], e["object_type"], e["task"], e["source"], e["split"], e["model"])].append(e)
+        game = TABLE3_GAME.get(e["game"], e["game"])
+        groups[(game, e["board_type"], e["object_type"], e["task"], e["source"], e["split"], e["model"])].append(e)
     rows = []
     for key in sorted(groups, key=_order):
         game, board, obj, task, source, split, model = key

@@ -90,3 +90,31 @@ def test_repair_attempt_recovers(play_episodes):
     s = result["scores"]["episode scores"]
     assert outcome(result["scores"]) == "success" and s["Main Score"] == 100.0
     assert len(result["interactions"]["sartco_attempts"]) == 2
+
+
+# The answer styles of real chat models (issue 16): each scores as the code inside it deserves.
+CODE = "\n".join(GOLD)
+GRID = "Row 8, Col 4: red washer, blue nut\nRow 3, Col 6-7: yellow bridge-h"
+FUNCTION = "def build(board):\n" + "\n".join(f"    {g}" for g in GOLD)
+STYLES = {
+    # name: (answer, outcome, category, puts)
+    "python block + text block": (f"```python\n{CODE}\n```\nResulting board:\n```text\n{GRID}\n```",
+                                  "success", "success", 3),
+    "python block + json block": (f"```python\n{CODE}\n```\n```json\n{{\"puts\": 3}}\n```", "success", "success", 3),
+    "usage label outside the fence": (f"Function:\n```python\n{FUNCTION}\n```\nUsage: build(board)",
+                                      "success", "success", 3),
+    "inline usage outside the fence": (f"```python\n{FUNCTION}\n```\nCall it with `build(board)`.",
+                                       "success", "success", 3),
+    "inline code per line": ("**Output:**\n" + "\n".join(f"`{g}`" for g in GOLD), "success", "success", 3),
+    "bold label + inline code, one put": (f"**Output:** `{GOLD[0]}`", "lose", "mismatch_location", 1),
+    "function without usage": (f"```python\n{FUNCTION}\n```", "lose", "mismatch_location", 0),
+    "text block only": (f"```text\n{GRID}\n```", "aborted", "parse_error", 0),
+}
+
+
+def test_answer_styles_score_as_their_code(play_episodes):
+    names = list(STYLES)
+    results = play_episodes([instance(i, [STYLES[n][0]]) for i, n in enumerate(names)], dict(SINGLE, name="styles"))
+    got = {name: (outcome(r["scores"]), r["scores"]["episode scores"]["Error Category"],
+                  r["scores"]["episode scores"]["Puts"]) for name, r in zip(names, results)}
+    assert got == {name: tuple(expected) for name, (_, *expected) in STYLES.items()}

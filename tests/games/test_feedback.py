@@ -237,10 +237,9 @@ def test_feedback_experiment_end_to_end(tmp_path):
     results, out = tmp_path / "results", tmp_path / "scores"
     experiment = "rb_co_repetition_template_feedback"
     clem, sartco = (str(Path(sys.executable).parent / name) for name in ("clem", "sartco"))
-    sh(clem, "run", "-g", "cobot_instruct", "-m", "mock", "-i", "instances_feedback", "-e", experiment,
-       "-r", str(results), "-l", "512")
-    sh(clem, "score", "-g", "cobot_instruct", "-r", str(results))
-    sh(clem, "transcribe", "-g", "cobot_instruct", "-r", str(results))
+    sh(clem, "run", "-g", "cobot_instruct_feedback", "-m", "mock", "-e", experiment, "-r", str(results), "-l", "512")
+    sh(clem, "score", "-g", "cobot_instruct_feedback", "-r", str(results))
+    sh(clem, "transcribe", "-g", "cobot_instruct_feedback", "-r", str(results))
     sh(clem, "eval", "-r", str(results))
     sh(sartco, "report", "-r", str(results), "--out", str(out))
     files = sorted(results.rglob("scores.json"))

@@ -63,3 +63,53 @@ def test_parse_error_is_clemcores():
 def test_broken_code_is_not_a_parse_error():
     # found but not compilable: executed and lost as syntax_error, not aborted
     assert parse_code("```python\nput(board, 'washer', 'red', 7, 3\n```") == "put(board, 'washer', 'red', 7, 3"
+
+
+# Answer styles real models use (issue 16: a local OpenAI-compatible stub server answering like
+# chat models do): each is read as the code inside it deserves.
+GRID = "Row 8, Col 4: red washer, blue nut\nRow 3, Col 6: yellow bridge-h"
+CALL = "wn(board, ('red', 'blue'), 7, 3)"
+STYLES = {
+    # only the Python blocks are code; an explanation or the expected board in another block is not
+    "python block + text block": (f"```python\n{PUT}\n```\nThe board afterwards:\n```text\n{GRID}\n```", PUT),
+    "python block + json block": (f"```python\n{PUT}\n```\n```json\n{{\"7:3\": [[\"washer\", \"red\"]]}}\n```", PUT),
+    "text block first": (f"Expected:\n```text\n{GRID}\n```\nCode:\n```python\n{PUT}\n```", PUT),
+    "untagged code + untagged grid": (f"```\n{PUT}\n```\nResult:\n```\n{GRID}\n```", PUT),
+    "py tag, capitalised": (f"```Python\n{FUNCTION}\n```\n```py\n{USAGE}\n```", f"{FUNCTION}\n{USAGE}"),
+    "the same block repeated as the final answer": (f"```python\n{PUT}\n```\nFinal answer:\n```python\n{PUT}\n```", PUT),
+    "untagged broken code is still code": ("```\nput(board, 'washer', 'red', 7, 3\n```",
+                                           "put(board, 'washer', 'red', 7, 3"),
+    # the usage line written outside the fence, beside its fenced function
+    "usage label after the fence": (f"Function:\n```python\n{FUNCTION}\n```\nUsage: {USAGE}", f"{FUNCTION}\n{USAGE}"),
+    "usage on its own line after the fence": (f"```python\n{FUNCTION}\n```\n**Usage:**\n{USAGE}\n",
+                                              f"{FUNCTION}\n{USAGE}"),
+    "inline usage after the fence": (f"```python\n{FUNCTION}\n```\nThen call it as `{USAGE}`.", f"{FUNCTION}\n{USAGE}"),
+    "bare usage after the fence": (f"```python\n{FUNCTION}\n```\n\n{USAGE}", f"{FUNCTION}\n{USAGE}"),
+    "usage before the fence goes after it": (f"Usage: {USAGE}\n```python\n{FUNCTION}\n```", f"{FUNCTION}\n{USAGE}"),
+    "usage inside and repeated outside: once": (f"```python\n{FUNCTION}\n{USAGE}\n```\nUsage: `{USAGE}`",
+                                                f"{FUNCTION}\n{USAGE}"),
+    "signature in prose is not a usage": (f"```python\n{FUNCTION}\n```\nThe function `wn(board, colors, x, y)` "
+                                          f"places a washer and a nut.\nUsage: `{USAGE}`", f"{FUNCTION}\n{USAGE}"),
+    "outside call of another function is prose": (f"```python\n{FUNCTION}\n```\nYou could also `{PUT}`.", FUNCTION),
+    # inline code when there is no block
+    "bold label + inline code": (f"**Output:** `{PUT}`", PUT),
+    "inline code in a sentence": (f"Place it with `{PUT}` and then `{CALL}`.", f"{PUT}\n{CALL}"),
+    "inline code per bullet": (f"- `{PUT}`\n- `put(board, 'nut', 'blue', 7, 3)`",
+                               f"{PUT}\nput(board, 'nut', 'blue', 7, 3)"),
+}
+
+
+@pytest.mark.parametrize("answer, expected", STYLES.values(), ids=STYLES.keys())
+def test_answer_styles(answer, expected):
+    assert parse_code(answer) == expected
+
+
+@pytest.mark.parametrize("answer", [
+    f"```text\n{GRID}\n```",                        # another language's block is never code
+    "```json\n{\"puts\": 3}\n```\nThat is the plan.",
+    f"```\n{GRID}\n```",                            # an untagged block with nothing like Python
+    "Use the `put` function for each piece.",       # an inline name is not a statement
+])
+def test_blocks_without_python_are_no_code(answer):
+    with pytest.raises(ParseError):
+        parse_code(answer)

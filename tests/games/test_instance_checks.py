@@ -1,0 +1,117 @@
+"""Bad instance files stop `clem run` before any model is asked, with one line naming the file,
+the experiment and the field, and exit code 2 (sartco.clem.benchmark); clemcore alone would log a
+traceback and go on, or play "0 rows" of an unknown experiment and exit 0."""
+import json
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from sartco.clem.benchmark import EPISODE_FIELDS, InstanceFileError, check_instances, clem_run_experiment
+
+REPO = Path(__file__).resolve().parents[2]
+GAME = REPO / "games" / "cobot_instruct"
+CLEM = str(Path(sys.executable).parent / "clem")
+SMOKE = json.loads((GAME / "in" / "instances_smoke.json").read_text(encoding="utf-8"))
+
+
+def without_target(data):
+    data = json.loads(json.dumps(data))
+    del data["experiments"][1]["game_instances"][1]["target"]
+    return json.dumps(data)
+
+
+BAD = {
+    # name: (instance file text or None for no file, clem run options, what the one line says)
+    "missing target": (without_target(SMOKE), [],
+                       "experiment sb_so_sequence_function_template, game_id 1: missing field 'target'"),
+    "truncated file": (json.dumps(SMOKE)[:5000], [], "instances.json: not valid JSON, truncated or broken at line 1 column"),
+    "missing -i file": (None, ["-i", "instances_typo"], "instances_typo.json: no such instance file (files in"),
+    "unknown experiment": (json.dumps(SMOKE), ["-e", "sb_so_first_order"],
+                           "no experiment 'sb_so_first_order' (experiments: sb_so_first_order_template, "
+                           "sb_so_sequence_function_template, sb_so_optimal_function_template, "
+                           "rb_so_repetition_template, rb_co_repetition_template)"),
+}
+
+
+@pytest.fixture
+def game_copy(tmp_path):
+    """The game's master and its first clemgame.json entry in a folder of its own, so the bad
+    files go into a copy of in/ (clemcore reads instance files from the game folder only)."""
+    folder = tmp_path / "games" / "cobot_instruct"
+    (folder / "in").mkdir(parents=True)
+    shutil.copy(GAME / "master.py", folder)
+    entry = json.loads((GAME / "clemgame.json").read_text())[0]
+    (folder / "clemgame.json").write_text(json.dumps(entry))
+    return tmp_path
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("case", BAD, ids=BAD)
+def test_bad_input_stops_clem_run_with_one_line(game_copy, case):
+    text, options, expected = BAD[case]
+    if text is not None:
+        (game_copy / "games" / "cobot_instruct" / "in" / "instances.json").write_text(text)
+    done = subprocess.run([CLEM, "run", "-g", "cobot_instruct", "-m", "mock", "-r", "res", *options],
+                          cwd=game_copy, capture_output=True, text=True, timeout=600)
+    assert done.returncode == 2, done.stdout[-1500:] + done.stderr[-1500:]
+    [line] = [ln for ln in done.stderr.splitlines() if ln.startswith("clem run -g cobot_instruct: ")]
+    assert expected in line and "/games/cobot_instruct/in/instances" in line
+    assert "Traceback" not in done.stderr + done.stdout
+    assert not list((game_copy / "res").rglob("interactions.json"))  # no episode was played
+
+
+@pytest.mark.slow
+def test_good_file_plays(game_copy):
+    (game_copy / "games" / "cobot_instruct" / "in" / "instances.json").write_text(json.dumps(SMOKE))
+    done = subprocess.run([CLEM, "run", "-g", "cobot_instruct", "-m", "mock", "-r", "res", "-e",
+                           "rb_co_repetition_template"], cwd=game_copy, capture_output=True, text=True, timeout=600)
+    assert done.returncode == 0, done.stderr[-1500:]
+    assert len(list((game_copy / "res").rglob("interactions.json"))) == 2
+
+
+def test_every_committed_instance_file_passes():
+    import importlib.util
+    spec = importlib.util.spec_from_file_location("cobot_instruct_master", GAME / "master.py")
+    master = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(master)
+    fields = master.CobotInstructBenchmark.episode_fields
+    assert set(EPISODE_FIELDS) < set(fields)
+    counts = {p.stem: check_instances(str(p), fields) for p in sorted((GAME / "in").glob("instances*.json"))
+              if "published" not in p.stem and "describers" not in p.stem and "local" not in p.stem}
+    assert counts == {"instances": 650, "instances_ablations": 850, "instances_feedback": 650, "instances_smoke": 10}
+
+
+@pytest.mark.parametrize("episode, message", [
+    ({"game_id": 3, "target": [], "rows": 8}, "game_id 3: field 'target' is list [], expected an object"),
+    ({"game_id": 4, "target": {}, "rows": True}, "game_id 4: field 'rows' is bool true, expected a number"),
+    ("nope", "episode 0: not an object"),
+])
+def test_field_types(tmp_path, episode, message):
+    path = tmp_path / "instances.json"
+    path.write_text(json.dumps({"experiments": [{"name": "e", "game_instances": [episode]}]}))
+    with pytest.raises(InstanceFileError) as info:
+        check_instances(str(path), {"target": dict, "rows": int})
+    assert str(info.value) == f"{path}: experiment e, {message}"
+
+
+@pytest.mark.parametrize("data", [[], {"experiments": []}, {"experiments": [{"game_instances": []}]}])
+def test_no_experiments(tmp_path, data):
+    path = tmp_path / "instances.json"
+    path.write_text(json.dumps(data))
+    with pytest.raises(InstanceFileError, match="experiment"):
+        check_instances(str(path), {})
+
+
+@pytest.mark.parametrize("argv, expected", [
+    (["/venv/bin/clem", "run", "-g", "x", "-m", "mock", "-e", "abc"], (True, "abc")),
+    (["clem", "run", "-g", "x", "-m", "a", "b", "--experiment_name=abc"], (True, "abc")),
+    (["clem", "run", "-g", "x", "-m", "mock"], (True, None)),
+    (["clem", "score", "-g", "x"], (False, None)),
+    (["/usr/bin/pytest", "-e", "abc"], (False, None)),
+    ([], (False, None)),
+])
+def test_clem_run_experiment(argv, expected):
+    assert clem_run_experiment(argv) == expected
