@@ -15,6 +15,7 @@ COMMANDS = {
     "import": ("sartco.instances.importer", "convert the published SARTCo files into the dataset format"),
     "import-instructions": ("sartco.instances.describer_import", "turn describer results into a dataset"),
     "report": ("sartco.scores.report", "paper-style tables from a clemcore results folder"),
+    "bench-run": ("sartco.clem.benchrun", "clem run against a stub model server: sequential vs the batching backend"),
 }
 
 
