@@ -19,6 +19,7 @@ clemcore finds the backend through the one-line openai_batching_api.py in the wo
 """
 from __future__ import annotations
 
+import inspect
 import logging
 import time
 from concurrent.futures import ThreadPoolExecutor
@@ -28,6 +29,7 @@ import httpx
 import openai
 from clemcore.backends import BatchGenerativeModel, ModelSpec
 from clemcore.backends.openai_api import OpenAI, OpenAIModel
+from clemcore.backends.utils import augment_response_object, ensure_messages_format
 
 log = logging.getLogger(__name__)
 
@@ -36,10 +38,10 @@ DEFAULTS = {"concurrency": 16, "retries": 5, "backoff": 1.0}
 MAX_DELAY = 60.0                 # seconds, the longest wait between two tries
 RETRIED = (openai.RateLimitError, openai.InternalServerError, openai.APIConnectionError)  # 429, 5xx, network, timeout
 
-# one request exactly as clemcore's OpenAIModel makes it (message checks, gen args, the
-# response object's clem_player metadata), without its blanket retry (3 tries, 10 s apart, on
-# any error): the retry policy here is our own, below
-_request_once = OpenAIModel.generate_response.__wrapped__
+# one request exactly as clemcore's OpenAIModel makes it: its method body under the same two
+# decorators (message checks; the response object's clem_player metadata), without its blanket
+# retry (3 tries, 10 s apart, on any error): the retry policy here is our own, below
+_request_once = augment_response_object(ensure_messages_format(inspect.unwrap(OpenAIModel.generate_response)))
 
 
 class BatchingOpenAIModel(OpenAIModel, BatchGenerativeModel):

@@ -46,7 +46,8 @@ class StubServer:
         self.max_requests, self.max_seconds, self.fail_first = max_requests, max_seconds, fail_first
         self.requests = 0
         self.intervals: list[tuple[float, float]] = []
-        self.unknown = 0
+        self.unknown = 0      # conversations without a gold answer
+        self.misrouted = 0    # requests to another path (404)
         self._lock = threading.Lock()
         self._stopped = threading.Event()
         self._httpd = ThreadingHTTPServer(("127.0.0.1", 0), self._handler())
@@ -125,9 +126,10 @@ class StubServer:
                 except json.JSONDecodeError:
                     status, payload = 400, {"error": {"message": "stub server: the body is not JSON"}}
                 else:
-                    if self.path.rstrip("/").endswith("/chat/completions"):
+                    if self.path.rstrip("/") == "/v1/chat/completions":
                         status, payload = server._answer(body)
                     else:
+                        server.misrouted += 1
                         status, payload = 404, {"error": {"message": f"stub server: no route {self.path}"}}
                 data = json.dumps(payload).encode("utf-8")
                 self.send_response(status)
