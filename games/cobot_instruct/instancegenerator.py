@@ -4,6 +4,8 @@
                                                                        # + in/instances_feedback.json
     python games/cobot_instruct/instancegenerator.py --published instances/published
                                                # in/instances_published.json + ..._published_feedback.json
+    python games/cobot_instruct/instancegenerator.py --train [--train-episodes N]
+                                               # in/instances_train.json (training, sartco.clem.training)
 
 in/instances.json (committed) comes from a generated dataset (default instances/v1):
   - the template cells of the paper's Table 3 on the test split, one experiment each;
@@ -19,6 +21,12 @@ end in _examples_<k> or _without_<section>. In-context examples always come from
 generated dataset's train split (the published data has no simple-board train split) and show
 template instructions with gold code of the task's style (sartco.instances.examples/prompts).
 Each experiment and the file record the dataset version, source and seed, and this generator's seed.
+
+Train split (for training, never mixed into the test cells): in/instances_train.json (gitignored:
+derived, about 8 kB an episode) holds one experiment per Table 3 cell, `<cell>_train` (template
+instructions, split "train"), over the dataset's train boards (all, or the first N of each
+cell); their in-context examples come from the same train pool, never the episode's own board
+(select_examples skips its combo and location).
 
 Feedback experiments (beyond the paper, issue 7) go to a file of their own,
 in/instances_feedback.json (in/instances_published_feedback.json for the published cells), so
@@ -125,13 +133,19 @@ class CobotInstructInstanceGenerator(GameInstanceGenerator):
 
     def on_generate(self, seed: int, dataset_dir: Path, published_dir: Path | None = None,
                     n_examples: int = N_EXAMPLES, ablation_episodes: int = ABLATION_EPISODES,
-                    describers_dir: Path | None = None):
+                    describers_dir: Path | None = None, train_episodes: int | None = None):
         manifest, files = load_dataset(dataset_dir)
         info = dataset_info(manifest, dataset_dir, seed, n_examples)
         self.instances["dataset"] = info
         pools = {board: records(files, board, "train") for board in BOARDS}
         if describers_dir is not None:
             self.add_described(describers_dir, info, pools, seed, n_examples)
+            return
+        if train_episodes is not None:  # 0: every train board
+            for board, task, _, _ in CELLS:
+                exp = self.experiment(f"{board}_{task}_template_train", board, task, "template", "train", info)
+                self.add_episodes(exp, pools[board][:train_episodes or None], task, "template", pools[board], seed,
+                                  n_examples)
             return
         if published_dir is None:
             for board, task, sources, _ in CELLS:
@@ -193,6 +207,10 @@ def main(argv=None) -> int:
     parser.add_argument("--ablation-episodes", type=int, default=ABLATION_EPISODES)
     parser.add_argument("--attempts", type=int, default=FEEDBACK_ATTEMPTS,
                         help=f"attempts per episode in the feedback experiments (default {FEEDBACK_ATTEMPTS})")
+    parser.add_argument("--train", action="store_true",
+                        help="write in/instances_train.json (the train split, for training) instead")
+    parser.add_argument("--train-episodes", type=int, default=0,
+                        help="with --train: episodes per cell (default 0: every train board)")
     args = parser.parse_args(argv)
     if args.attempts < 2:
         print(f"instancegenerator: --attempts must be at least 2, not {args.attempts}", file=sys.stderr)
@@ -201,13 +219,16 @@ def main(argv=None) -> int:
     outputs = ((f"{stem}.json", None), (f"{stem}{FEEDBACK_SUFFIX}.json", args.attempts))
     if args.describers is not None:
         outputs = (("instances_describers.json", None),)
+    if args.train:
+        outputs = (("instances_train.json", None),)
     for name, attempts in outputs:
         try:
             gen = CobotInstructInstanceGenerator(feedback_attempts=attempts)
             path = gen.generate(name, seed=args.seed, dataset_dir=args.dataset.resolve(),
                                 published_dir=args.published.resolve() if args.published else None,
                                 n_examples=args.examples, ablation_episodes=args.ablation_episodes,
-                                describers_dir=args.describers.resolve() if args.describers else None)
+                                describers_dir=args.describers.resolve() if args.describers else None,
+                                train_episodes=max(args.train_episodes, 0) if args.train else None)
         except (UserError, KeyError, ValueError) as exc:
             print(f"instancegenerator: {exc}", file=sys.stderr)
             return 2
