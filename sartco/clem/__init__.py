@@ -10,4 +10,8 @@ live inside a game folder). Reuse these from any game whose player writes code:
 - scoring.BuildScorer                  scores.json from the recorded build
 - pictures.attach_all                  board pictures for transcripts, written at `clem score`
 - rulebased.RulebasedBackend           `-m rulebased` (the rule-based follower as a model)
+- transcript.MarkdownTranscript        messages as they read (code as code) in transcript.html
+- batching.OpenAIBatchingBackend       `openai_batching`: concurrent requests to an OpenAI-compatible server
+- stub_server.StubServer, benchrun     a local stub model server; `sartco bench-run`
+- training.gym_env                     clemcore's gym env on the train split, ES / cell F1 rewards
 """
