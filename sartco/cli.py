@@ -17,6 +17,7 @@ COMMANDS = {
     "report": ("sartco.scores.report", "paper-style tables from a clemcore results folder"),
     "export-prompts": ("sartco.protocols.export", "the prompts of a protocol's episodes (paper or sartco) as JSON lines"),
     "score-responses": ("sartco.protocols.score", "score raw answers (JSON lines) in a protocol (paper or sartco)"),
+    "bench-run": ("sartco.clem.benchrun", "clem run against a stub model server: sequential vs the batching backend"),
 }
 
 

@@ -30,9 +30,10 @@ from sartco.clem.building import build_for, finish_build, parse_failure_for
 from sartco.clem.describer import DescribeScorer, Describer, fill_builder_prompt, log_instruction, parse_instruction
 from sartco.clem.outcomes import log_outcome
 from sartco.clem.parsing import parse_code
+from sartco.clem.transcript import MarkdownTranscript
 
 
-class CobotDescribe(DialogueGameMaster):
+class CobotDescribe(MarkdownTranscript, DialogueGameMaster):
 
     def _on_setup(self, **instance):
         self.episode = instance

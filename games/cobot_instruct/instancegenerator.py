@@ -5,6 +5,8 @@
     python games/cobot_instruct/instancegenerator.py --published instances/published
                                                # in/instances_published.json + ..._published_feedback.json
     python games/cobot_instruct/instancegenerator.py --protocol paper   # in/instances_paper.json
+    python games/cobot_instruct/instancegenerator.py --train [--train-episodes N]
+                                               # in/instances_train.json (training, sartco.clem.training)
 
 One file per kind of run, each played under its own clemgame.json entry (its own game name, so
 its results, and clem eval's clemscore, never mix with the others):
@@ -30,6 +32,12 @@ end in _examples_<k> or _without_<section>. In-context examples always come from
 generated dataset's train split (the published data has no simple-board train split) and show
 template instructions with gold code of the task's style (sartco.instances.examples/prompts).
 Each experiment and the file record the dataset version, source and seed, and this generator's seed.
+
+Train split (for training, never mixed into the test cells): in/instances_train.json (gitignored:
+derived, about 8 kB an episode) holds one experiment per Table 3 cell, `<cell>_train` (template
+instructions, split "train"), over the dataset's train boards (all, or the first N of each
+cell); their in-context examples come from the same train pool, never the episode's own board
+(select_examples skips its combo and location).
 
 in/instances_paper.json (gitignored: it embeds the authors' templates and the published texts) is
 the paper protocol (game entry cobot_instruct_paper): sartco.paper.episodes.build_episodes, every
@@ -170,15 +178,23 @@ class CobotInstructInstanceGenerator(GameInstanceGenerator):
 
     def on_generate(self, seed: int, dataset_dir: Path, published_dir: Path | None = None,
                     n_examples: int = N_EXAMPLES, ablation_episodes: int = ABLATION_EPISODES,
-                    describers_dir: Path | None = None, part: str = "cells", per_experiment: int | None = None):
+                    describers_dir: Path | None = None, part: str = "cells", per_experiment: int | None = None,
+                    train_episodes: int = 0):
         """part: "cells" (the Table 3 cells, test split; per_experiment: only the first episodes of
-        each, a smoke file) or "ablations" (val split)."""
+        each, a smoke file) "ablations" (val split) or "train" (the train split, for training; train_episodes: the
+        first N boards of each cell, 0: all)."""
         manifest, files = load_dataset(dataset_dir)
         info = dataset_info(manifest, dataset_dir, seed, n_examples)
         self.instances["dataset"] = info
         pools = {board: records(files, board, "train") for board in BOARDS}
         if describers_dir is not None:
             self.add_described(describers_dir, info, pools, seed, n_examples)
+            return
+        if part == "train":
+            for board, task, _, _ in CELLS:
+                exp = self.experiment(f"{board}_{task}_template_train", board, task, "template", "train", info)
+                self.add_episodes(exp, pools[board][:train_episodes or None], task, "template", pools[board], seed,
+                                  n_examples)
             return
         if part == "ablations":
             for board, task, _, _ in CELLS:
@@ -247,6 +263,10 @@ def main(argv=None) -> int:
                         help=f"episodes per experiment in in/instances_smoke.json (default {SMOKE_EPISODES})")
     parser.add_argument("--attempts", type=int, default=FEEDBACK_ATTEMPTS,
                         help=f"attempts per episode in the feedback experiments (default {FEEDBACK_ATTEMPTS})")
+    parser.add_argument("--train", action="store_true",
+                        help="write in/instances_train.json (the train split, for training) instead")
+    parser.add_argument("--train-episodes", type=int, default=0,
+                        help="with --train: episodes per cell (default 0: every train board)")
     args = parser.parse_args(argv)
     if args.attempts < 2:
         print(f"instancegenerator: --attempts must be at least 2, not {args.attempts}", file=sys.stderr)
@@ -263,6 +283,8 @@ def main(argv=None) -> int:
     elif args.published is not None:
         outputs = [("instances_published.json", None, {}),
                    (f"instances_published{FEEDBACK_SUFFIX}.json", args.attempts, {})]
+    elif args.train:
+        outputs = [("instances_train.json", None, {"part": "train", "train_episodes": max(args.train_episodes, 0)})]
     else:
         outputs = [("instances.json", None, {}), ("instances_ablations.json", None, {"part": "ablations"}),
                    (f"instances{FEEDBACK_SUFFIX}.json", args.attempts, {}),

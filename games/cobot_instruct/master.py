@@ -39,9 +39,10 @@ from sartco.clem.feedback import feedback_for, max_attempts
 from sartco.clem.outcomes import log_outcome
 from sartco.clem.paper import PAPER_EPISODE_FIELDS, PaperScorer, finish_paper, is_paper
 from sartco.clem.parsing import parse_code
+from sartco.clem.transcript import MarkdownTranscript
 
 
-class CobotInstruct(DialogueGameMaster):
+class CobotInstruct(MarkdownTranscript, DialogueGameMaster):
 
     def _on_setup(self, **instance):
         self.instance = instance
@@ -95,7 +96,7 @@ class CobotInstruct(DialogueGameMaster):
         if record.es or left <= 0:
             finish_build(self, record, self.attempts)
             return
-        log_build(self, record, final=False)
+        log_build(self, record, final=False, attempt=len(self.attempts))
         self.codes = []
         self.set_context_for(self.builder, feedback_for(record, attempts_left=left))
 

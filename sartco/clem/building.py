@@ -14,10 +14,16 @@ from sartco.world import ErrorCode
 from sartco.world.render import differing_cells
 
 from .outcomes import SUCCESS_CATEGORY, family, set_attempts_outcome
+from .transcript import code_block, picture, text_block
 
 BUILD_KEY = "sartco_build"          # interactions.json key of the final build record
 ATTEMPTS_KEY = "sartco_attempts"    # every attempt's record, for repair experiments
 BOARD_EVENT = "board"               # the GM->GM event that shows target and built board
+PICTURE = "boards.svg"              # the final build's picture, beside interactions.json
+ATTEMPT_PICTURE = "boards_{}.svg"   # attempt 1, 2, ... (every episode has attempt 1)
+PICTURE_ALT = "target (left) and built board (right); differing cells framed"
+# what the last step of an episode puts into clemcore's step info (the gym env's `info`): info key -> record field
+INFO_FIELDS = {"es": "es", "cell_f1": "f1", "error_category": "category", "puts": "puts"}
 
 
 @dataclass(frozen=True, slots=True)
@@ -120,17 +126,24 @@ def parse_failure_for(instance: dict, message: str, turn_codes: list[str] | None
 
 
 def finish_build(game_master, record: BuildRecord, attempts: list[BuildRecord] | None = None) -> None:
-    """The episode ends with `record`: log it as the final build and move the game state to the
-    outcome of the attempts (every attempt in order, `record` the last; default: `record` alone)."""
-    log_build(game_master, record)
-    set_attempts_outcome(game_master.state, [a.category for a in (attempts or [record])])
+    """The episode ends with `record`: log it as the final build, move the game state to the
+    outcome of the attempts (every attempt in order, `record` the last; default: `record` alone)
+    and hand ES, cell F1, category and puts to clemcore's step info (what a gym env's `info` and
+    reward function see, sartco.clem.training)."""
+    attempts = attempts or [record]
+    log_build(game_master, record, attempt=len(attempts))
+    set_attempts_outcome(game_master.state, [a.category for a in attempts])
+    game_master.info.update({key: getattr(record, name) for key, name in INFO_FIELDS.items()})
 
 
-def log_build(game_master, record: BuildRecord, *, final: bool = True) -> None:
-    """Record a build in the episode: a GM->GM 'board' event for the transcript (the executed
-    program and the category; `clem score` later links the board pictures to it) and, for the
-    final build, the record under BUILD_KEY for the scorer."""
-    content = f"{record.summary()}\n\nexecuted program:\n{record.program or '(nothing: no code found)'}"
+def log_build(game_master, record: BuildRecord, *, final: bool = True, attempt: int = 1) -> None:
+    """Record a build in the episode: a GM->GM 'board' event for the transcript (outcome line,
+    the executed program as code, and the picture of target and built board, which `clem score`
+    writes as ATTEMPT_PICTURE beside interactions.json, sartco.clem.pictures) and, for the final
+    build, the record under BUILD_KEY for the scorer."""
+    program = code_block(record.program) if record.program else text_block("(nothing: no code found)")
+    content = "\n\n".join([text_block(record.summary()), text_block("executed program:"), program,
+                            picture(ATTEMPT_PICTURE.format(attempt), PICTURE_ALT)])
     game_master.log_event("GM", "GM", {"type": BOARD_EVENT, "content": content,
                                        "category": record.category})
     if final:

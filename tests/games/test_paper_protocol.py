@@ -6,6 +6,7 @@ import json
 import pytest
 
 from sartco.clem.paper import experiment_fields, instance_fields
+from sartco.clem.transcript import display
 from sartco.program.gold import DEFAULT_DATA
 
 pytestmark = pytest.mark.skipif(not (DEFAULT_DATA / "published").is_dir(), reason="shared data missing")
@@ -64,7 +65,7 @@ def test_mock_answers_the_authors_gold_es_1_em_0_on_functions(paper_episodes, pl
         # every turn is the authors' user message, verbatim, and nothing else is sent
         sent = [e["action"]["content"] for t in result["interactions"]["turns"] for e in t
                 if e["action"]["type"] == "send message"]
-        assert sent == ep["messages"]
+        assert sent == [display(m) for m in ep["messages"]]  # logged in display form (sartco.clem.transcript)
         events = [e for t in result["interactions"]["turns"] for e in t if e["action"]["type"] == "paper_turn"]
         assert len(events) == n and events[0]["action"]["scores"]["reading"]
 

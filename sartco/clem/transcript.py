@@ -1,0 +1,69 @@
+"""How the games' messages read in clemcore's transcripts (`clem transcribe` -> transcript.html).
+
+clemcore renders a message either as escaped text with line breaks (leading spaces collapse, so a
+loop body sits flush with its `for`) or, when the interactions record holds `"markdown": true`,
+through Python-Markdown. Markdown alone does not help either: clemcore strips the backticks of a
+message that is one fenced block (the most common answer), and an unfenced answer's lines run
+together into one paragraph. So our game masters (the `MarkdownTranscript` mixin) set the key and
+log every message in `display` form: fenced code as a code block, everything else as
+preformatted text that keeps its line breaks and indentation and wraps long lines; all text is
+HTML-escaped (model output is hostile input: no markup of a model reaches the reader's browser).
+The exact texts stay in the players' requests files (player_N.requests.json); the models never
+see the display form. Board pictures are `<img>` tags with paths relative to the episode folder
+(`picture`), so a copied results folder still shows them.
+"""
+from __future__ import annotations
+
+import html
+import re
+
+MARKDOWN_KEY = "markdown"  # the interactions.json key that switches clemcore's transcript to Markdown
+FENCE = re.compile(r"^[ \t]*```[^\n]*\n(.*?)^[ \t]*```[ \t]*$", re.M | re.S)  # a closed fenced block
+TEXT_STYLE = "white-space: pre-wrap; margin: 0"
+CODE_STYLE = ("white-space: pre; overflow-x: auto; margin: 4px 0; padding: 6px; background: #f6f8fa; "
+              "border: 1px solid #d0d7de; border-radius: 4px; font-family: monospace")
+
+
+def text_block(text: str) -> str:
+    """Plain text as an HTML block that keeps its line breaks and indentation."""
+    return f'<div class="sartco-text" style="{TEXT_STYLE}">{html.escape(text, quote=False)}</div>'
+
+
+def code_block(code: str) -> str:
+    """Code as a code block (monospace, indentation kept; long lines scroll rather than wrap)."""
+    return (f'<pre class="sartco-code" style="{CODE_STYLE}"><code class="language-python">'
+            f"{html.escape(code.rstrip(), quote=False)}</code></pre>")
+
+
+def picture(path: str, alt: str) -> str:
+    """An image by a path relative to the episode folder (where transcript.html is written)."""
+    return f'<div class="sartco-picture"><img src="{html.escape(path)}" alt="{html.escape(alt)}" style="max-width: 100%" /></div>'
+
+
+def display(text: str) -> str:
+    """A message in display form: closed ```-fenced blocks as code, the rest as preformatted text.
+    An unclosed fence (an answer cut off at max tokens) stays text, verbatim."""
+    blocks, pos = [], 0
+    for match in FENCE.finditer(text):
+        before = text[pos:match.start()].strip("\n")
+        if before.strip():
+            blocks.append(text_block(before))
+        blocks.append(code_block(match.group(1)))
+        pos = match.end()
+    rest = text[pos:].strip("\n")
+    if rest.strip() or not blocks:
+        blocks.append(text_block(rest))
+    return "\n\n".join(blocks)  # blank lines between HTML blocks: Markdown passes each through as is
+
+
+class MarkdownTranscript:
+    """Mixin for a DialogueGameMaster (put it first among the bases): the transcript shows every
+    message of the game in `display` form. clemcore's `step` logs each exchange through these two
+    methods; what the players receive and answer is unchanged."""
+
+    def log_gm_to_player(self, context, player):
+        self.log_key(MARKDOWN_KEY, True)  # before the first message; the same value every time
+        super().log_gm_to_player(dict(context, content=display(context["content"])), player)
+
+    def log_player_to_gm(self, response, player):
+        super().log_player_to_gm(display(response), player)

@@ -1,0 +1,133 @@
+"""The openai_batching backend against the local stub server: concurrency limit, order, retries
+with backoff, the same answers as sequential; and `sartco bench-run` on a small run (the batched
+run's scores.json files equal the sequential run's)."""
+import json
+from pathlib import Path
+
+import openai
+import pytest
+from clemcore.backends import ModelSpec
+
+from sartco.clem import benchrun
+from sartco.clem.batching import OpenAIBatchingBackend, retry_delay
+from sartco.clem.stub_server import NO_CODE, StubServer, answer_table, conversation_key
+
+TURNS = {f"Instruction {k}.": f"put(board, 'nut', 'red', {k}, 0)" for k in range(8)}
+
+
+def answers():
+    return {conversation_key([turn]): f"```python\n{code}\n```" for turn, code in TURNS.items()}
+
+
+def model_for(server: StubServer, tmp_path, monkeypatch, base_url=None, **config):
+    """The backend as clemcore loads it: key.json in the working directory, a registry entry."""
+    (tmp_path / "key.json").write_text(json.dumps(
+        {"openai_compatible": {"api_key": "none", "base_url": base_url or server.base_url}}))
+    monkeypatch.chdir(tmp_path)
+    spec = ModelSpec(model_name="stub", model_id="stub", backend="openai_batching",
+                     model_config={"backoff": 0.01, **config})
+    model = OpenAIBatchingBackend().get_model_for(spec)
+    model.set_gen_args(temperature=0.0, max_tokens=100)
+    return model
+
+
+def overlap(intervals) -> int:
+    """The most requests in flight at once."""
+    events = sorted([(a, 1) for a, _ in intervals] + [(b, -1) for _, b in intervals], key=lambda e: (e[0], e[1]))
+    most = now = 0
+    for _, step in events:
+        now += step
+        most = max(most, now)
+    return most
+
+
+def test_batch_is_concurrent_up_to_the_limit_and_in_order(tmp_path, monkeypatch):
+    with StubServer(answers(), latency=1.0) as server:
+        model = model_for(server, tmp_path, monkeypatch, concurrency=4)
+        assert model.supports_batching()  # what makes clem run -b N take the batchwise runner
+        turns = list(TURNS)
+        results = model.generate_batch_response([[{"role": "user", "content": t}] for t in turns])
+    assert [text for _, _, text in results] == [answers()[conversation_key([t])] for t in turns]
+    assert overlap(server.intervals) == 4 and len(server.intervals) == 8
+    assert results[0][1]["clem_player"]["model_name"] == "stub"  # clemcore's response object
+
+
+def test_sequential_call_gives_the_same_answer(tmp_path, monkeypatch):
+    with StubServer(answers(), latency=0.0) as server:
+        model = model_for(server, tmp_path, monkeypatch)
+        messages = [{"role": "user", "content": "Instruction 3."}]
+        assert model.generate_response(messages)[2] == model.generate_batch_response([messages])[0][2]
+        assert model.generate_response([{"role": "user", "content": "unknown"}])[2] == NO_CODE
+
+
+def test_5xx_is_retried_with_backoff(tmp_path, monkeypatch):
+    with StubServer(answers(), latency=0.0, fail_first=2) as server:
+        model = model_for(server, tmp_path, monkeypatch, retries=2)
+        text = model.generate_response([{"role": "user", "content": "Instruction 1."}])[2]
+    assert text == answers()[conversation_key(["Instruction 1."])]
+    assert server.requests == 3  # two failures, then the answer: each try is one request (the client retries none)
+
+
+def test_retries_run_out(tmp_path, monkeypatch):
+    with StubServer(answers(), latency=0.0, fail_first=10) as server:
+        model = model_for(server, tmp_path, monkeypatch, retries=1)
+        with pytest.raises(openai.InternalServerError):
+            model.generate_response([{"role": "user", "content": "Instruction 1."}])
+    assert server.requests == 2
+
+
+def test_other_errors_are_not_retried(tmp_path, monkeypatch):
+    with StubServer(answers(), latency=0.0) as server:
+        model = model_for(server, tmp_path, monkeypatch, base_url=server.base_url.replace("/v1", "/nowhere"))
+        with pytest.raises(openai.NotFoundError):
+            model.generate_response([{"role": "user", "content": "Instruction 1."}])
+    assert (server.misrouted, server.requests) == (1, 0)  # the 404 was not retried
+
+
+def test_retry_delay():
+    class Error(Exception):
+        def __init__(self, headers):
+            self.response = type("R", (), {"headers": headers})()
+    assert retry_delay(Error({"retry-after": "3"}), 0, 1.0) == 3.0
+    assert [retry_delay(Error({}), k, 0.5) for k in range(4)] == [0.5, 1.0, 2.0, 4.0]
+    assert retry_delay(Error({}), 20, 1.0) == 60.0
+    assert retry_delay(ValueError(), 1, 1.0) == 2.0
+
+
+def test_bad_model_config(tmp_path, monkeypatch):
+    with StubServer({}, latency=0.0) as server:
+        with pytest.raises(ValueError, match="concurrency >= 1"):
+            model_for(server, tmp_path, monkeypatch, concurrency=0)
+
+
+def test_stub_server_stops_after_its_request_budget():
+    with StubServer(answers(), latency=0.0, max_requests=1) as server:
+        client = openai.OpenAI(base_url=server.base_url, api_key="none", max_retries=0)
+        client.chat.completions.create(model="stub", messages=[{"role": "user", "content": "Instruction 0."}])
+        with pytest.raises(openai.InternalServerError):  # 503
+            client.chat.completions.create(model="stub", messages=[{"role": "user", "content": "Instruction 0."}])
+
+
+def test_answer_table_covers_every_turn():
+    instance = {"turns": ["prompt + turn 1", "turn 2"], "gold_turns": ["a = 1", "b = 2"]}
+    table = answer_table([instance])
+    assert table[conversation_key(["prompt + turn 1"])] == "```python\na = 1\n```"
+    assert table[conversation_key(["prompt + turn 1", "turn 2"])] == "```python\nb = 2\n```"
+
+
+@pytest.mark.slow
+def test_bench_run_batched_scores_equal_sequential(tmp_path):
+    # multi-turn (first-order, 2-5 requests per episode) and single-turn episodes
+    result = benchrun.bench(["sb_so_first_order_template", "rb_co_repetition_template"], episodes=5, latency=0.05,
+                            concurrency=4, batch=4, out=tmp_path / "bench", max_seconds=600)
+    assert result["episodes"] == 10 and result["unknown"] == 0 and result["scores"] == 10
+    assert result["scores_equal"]
+    assert result["sequential"]["requests"] == result["batched"]["requests"] == result["requests"] > 10
+    one = json.loads(next((tmp_path / "bench" / "batched" / "results").rglob("scores.json")).read_text())
+    assert one["episode scores"]["Main Score"] == 100.0  # the stub answered with the gold code
+
+
+def test_bench_run_rejects_an_unknown_experiment(tmp_path):
+    from sartco.cli import UserError
+    with pytest.raises(UserError, match="unknown cobot_instruct experiment"):
+        benchrun.select_instances(["no_such_experiment"], 0)

@@ -1,0 +1,143 @@
+"""Transcripts as a leaderboard reader sees them: code as code with its indentation, board
+pictures that travel with a copied results folder, looked at in a real browser (headless
+Chromium) through clem run / score / transcribe."""
+import http.server
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import threading
+from functools import partial
+from pathlib import Path
+
+import markdown
+import pytest
+
+from sartco.clem.transcript import display
+
+REPO = Path(__file__).resolve().parents[2]
+GAME, EXPERIMENT = "cobot_instruct_ablations", "rb_so_repetition_template_examples_0"  # 10 val episodes, loops in the gold code
+SCREENSHOT = REPO / "docs" / "transcript.png"
+
+
+def rendered(text: str) -> str:
+    """What clemcore's transcript builder makes of a message in markdown mode."""
+    return markdown.markdown(display(text).strip(), extensions=["fenced_code"])
+
+
+def test_fenced_answer_is_code_with_its_indentation():
+    html = rendered("```python\nfor x in range(2):\n    put(board, 'nut', 'red', x, 0)\n```")
+    assert '<pre class="sartco-code"' in html
+    assert "for x in range(2):\n    put(board, 'nut', 'red', x, 0)" in html
+
+
+def test_unfenced_answer_keeps_lines_and_indentation():
+    answer = "Output:\nfor x in range(2):\n    put(board, 'nut', 'red', x, 0)\n\n# done"
+    html = rendered(answer)
+    assert "Output:\nfor x in range(2):\n    put(board, 'nut', 'red', x, 0)\n\n# done" in html
+    assert "white-space: pre-wrap" in html and "<p>" not in html  # not run together into a paragraph
+
+
+def test_prose_around_blocks_and_an_unclosed_fence():
+    html = rendered("Sure:\n```python\nput(board, 'nut', 'red', 0, 0)\n```\nThat is all.\n```python\nput(")
+    assert html.count('class="sartco-code"') == 1  # the unclosed one stays text, verbatim
+    assert "Sure:" in html and "That is all.\n```python\nput(" in html
+
+
+def test_model_markup_is_escaped():
+    html = rendered("<script>alert(1)</script> <img src=x onerror=alert(2)> *not emphasis* `x`")
+    assert "<script>" not in html and "<img" not in html and "<em>" not in html
+    assert "&lt;script&gt;" in html
+
+
+def chromium() -> str:
+    found = shutil.which("chromium") or shutil.which("chromium-browser")
+    if found is None:
+        if os.environ.get("SARTCO_REQUIRE_BROWSER"):  # .ci/run installs Chromium: there it must run
+            pytest.fail("SARTCO_REQUIRE_BROWSER is set but chromium is not on PATH")
+        pytest.skip("chromium is not installed (apt-get install chromium; .ci/run does)")
+    return found
+
+
+def browse(browser: str, profile: Path, *args: str) -> subprocess.CompletedProcess:
+    flags = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+             "--disable-component-update", "--disable-sync", "--no-first-run", "--hide-scrollbars",
+             f"--user-data-dir={profile}"]
+    done = subprocess.run([browser, *flags, *args], capture_output=True, text=True, timeout=180)
+    assert done.returncode == 0, done.stderr[-2000:]
+    return done
+
+
+# A page beside transcript.html that loads it in a frame (same origin: both from the local HTTP
+# server) and reports, after load, every picture's size and the x position of each line of the
+# first code block, measured with a DOM Range on the line's first visible character.
+PROBE = """<!doctype html><html><body>
+<iframe id="t" src="transcript.html" style="width: 1000px; height: 3000px"></iframe>
+<pre id="out">pending</pre>
+<script>
+window.addEventListener("load", () => {
+  const d = document.getElementById("t").contentDocument;
+  const pictures = [...d.images].map(i => [i.getAttribute("src"), i.complete, i.naturalWidth]);
+  const lines = [];
+  const code = d.querySelector("pre.sartco-code code");
+  const node = code ? code.firstChild : null;
+  if (node) {
+    let start = 0;
+    for (const line of node.textContent.split("\\n")) {
+      const lead = line.length - line.trimStart().length;
+      if (line.trim()) {
+        const r = d.createRange();
+        r.setStart(node, start + lead); r.setEnd(node, start + lead + 1);
+        lines.push([line, r.getBoundingClientRect().left]);
+      }
+      start += line.length + 1;
+    }
+  }
+  document.getElementById("out").textContent = JSON.stringify({pictures, lines});
+});
+</script></body></html>
+"""
+
+
+@pytest.mark.slow
+def test_transcript_of_a_copied_results_folder_in_a_browser(tmp_path):
+    browser = chromium()
+    bin_dir = Path(sys.executable).parent
+    results = tmp_path / "results"
+    for step in (["run", "-m", "mock", "-e", EXPERIMENT], ["score"], ["transcribe"]):
+        done = subprocess.run([str(bin_dir / "clem"), step[0], "-g", GAME, *step[1:], "-r", str(results)],
+                              cwd=REPO, capture_output=True, text=True, timeout=600)
+        assert done.returncode == 0, done.stderr[-2000:]
+    published = tmp_path / "elsewhere" / "runs"
+    shutil.copytree(results, published)
+    shutil.rmtree(results)  # nothing may point back to where it was scored
+    episode = next(published.rglob("instance_00000"))
+    (episode / "probe.html").write_text(PROBE, encoding="utf-8")
+
+    server = http.server.ThreadingHTTPServer(
+        ("127.0.0.1", 0), partial(http.server.SimpleHTTPRequestHandler, directory=str(published)))
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+    try:
+        base = f"http://127.0.0.1:{server.server_address[1]}/{episode.relative_to(published).as_posix()}"
+        dom = browse(browser, tmp_path / "profile1", "--virtual-time-budget=10000", "--dump-dom",
+                     f"{base}/probe.html").stdout
+        shot = tmp_path / "transcript.png"
+        browse(browser, tmp_path / "profile2", "--window-size=1000,1900", f"--screenshot={shot}",
+               f"{base}/transcript.html")
+    finally:
+        server.shutdown()
+    found = json.loads(re.search(r'<pre id="out">(.*?)</pre>', dom, re.S).group(1).replace("&quot;", '"'))
+    assert [src for src, _, _ in found["pictures"]] == ["boards_1.svg"]
+    assert all(complete and width > 100 for _, complete, width in found["pictures"]), found["pictures"]
+    lines = found["lines"]
+    assert lines, "no code block in the transcript"
+    flush = [x for line, x in lines if not line.startswith(" ")]
+    indented = [(line, x) for line, x in lines if line.startswith("    ")]
+    assert indented, lines
+    for line, x in indented:  # four spaces of monospace further right than the unindented lines
+        assert x > min(flush) + 15, (line, x, min(flush))
+    assert shot.stat().st_size > 10_000
+    if os.environ.get("SARTCO_SCREENSHOT"):  # refresh the README's picture: SARTCO_SCREENSHOT=1 pytest ...
+        shutil.copyfile(shot, SCREENSHOT)
