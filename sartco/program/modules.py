@@ -6,8 +6,9 @@ functions where they cannot reach anything outside the task's world or grow with
 and checked versions where they could (`math.factorial`, `operator.mul`, ...). Every other
 module is refused, naming why: `os`, `sys`, `subprocess`, `importlib`, `builtins`, `ctypes`,
 `pickle`, `io`, `socket`, ... reach the interpreter, the file system or the network; `random`
-would make the board a matter of chance; `re`, `collections.namedtuple`, `typing.get_type_hints`
-and `string.Formatter` run text as code or read attributes by name. `MEMBERS` (names only)
+would make the board a matter of chance; `re` can backtrack in C code for longer than any
+budget sees; `collections.namedtuple`, `typing.get_type_hints` and `string.Formatter` run text
+as code or read attributes by name, so they are not members. `MEMBERS` (names only)
 lets check.py refuse an unknown module or member before anything runs.
 
 numpy is a stand-in for what honest code of this task does with it: `np.ndarray` (and the
@@ -27,7 +28,7 @@ import string
 import typing
 
 from . import budget
-from .budget import INT, Limit, too_big, too_long
+from .budget import INT, Forbidden, too_big, too_long
 
 
 class Module:
@@ -179,7 +180,7 @@ REFUSED = {  # why a module a program may want is not there
                      "types", "dis", "runpy", "atexit", "traceback", "weakref", "sysconfig", "site"),
                     "it reaches the interpreter, the file system or the network"),
     "random": "a board that depends on chance cannot be scored; write the coordinates",
-    "re": "regular expressions are not needed to place pieces",
+    "re": "a regular expression can run in C code beyond every budget",
     "time": "the board must not depend on the clock", "datetime": "the board must not depend on the clock",
 }
 
@@ -197,11 +198,7 @@ def load(name: str) -> Module:
 
 def import_module(name, globals=None, locals=None, fromlist=(), level=0):
     """The `__import__` of a program's import statements (check.py refused every other name)."""
-    from .budget import Forbidden
-
     if level != 0 or name not in _MEMBERS_CACHE:
         raise Forbidden(refusal(name))
     return load(name)
 
-
-__all__ = ["MEMBERS", "Module", "import_module", "refusal", "INT", "Limit"]

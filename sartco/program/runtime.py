@@ -1,17 +1,23 @@
 """Run one prepared program on a fresh board, inside the worker process.
 
-The program's globals are `board`, `put`, `init_board`; its `__builtins__` is a small dict of
-the allowed builtins (some wrapped: `range`, `round`, `sum`, `print`) plus the `$` helpers that
-`check.py` inserted. The result board is the global `board` if it is a Board, else the most
-recently created board. Every outcome is turned into `[ok, code, message, cells, puts]`.
+The program's globals are `board`, `put`, `init_board`; its `__builtins__` is a fresh copy of
+BUILTINS: the allowed builtins (some with budgets, see budget.py: `range`, `round`, `sum`,
+`int`, `str`, `repr`, `pow`, `format`; `print` does nothing), a refusing stand-in for every
+other builtin name (calling it is `forbidden`), `__import__` for the stand-in modules
+(modules.py), and the `$` helpers that check.py inserted. The result board is the global
+`board` if it is a Board, else the most recently created board. Every outcome is turned into
+`[ok, code, message, cells, puts]`, the message cleaned (records.clean).
 
 Python exceptions map to codes: NameError -> name_error, TypeError -> type_error, ValueError ->
 value_error, KeyError -> key_error, IndexError -> index_error, ZeroDivisionError ->
 zero_division, RecursionError/MemoryError/OverflowError and exhausted length/integer budgets ->
-resource_limit, a spent step budget -> timeout, WorldError -> its own code, Forbidden (a method
-on an object that is not a list/dict/str/tuple, printf-style %) -> forbidden, anything else ->
-runtime_error. A method that the object's (allowed) type lacks raises AttributeError, as in
-plain Python, hence runtime_error.
+resource_limit, a spent step budget -> timeout, WorldError -> its own code, Forbidden (an
+attribute on a type outside TYPE_METHODS, a refused builtin or format field) -> forbidden,
+anything else (AssertionError, RuntimeError, AttributeError, ...) -> runtime_error. A budget
+stop or refusal is the verdict even when the program swallowed it (budget.STOPPED, a spent step
+counter). After a budget stop, a MemoryError or an internal error, SPOILED tells the worker to
+retire; no internal error ever ends as `ok`, and only verdicts that depend on the source alone
+are cached.
 """
 from __future__ import annotations
 
