@@ -34,8 +34,8 @@ _LONG_NUMBER = re.compile(r"\d{%d,}" % (SPEC_DIGITS + 1))
 _PRINTF = re.compile(r"%(?:\([^)]*\))?[-#0 +]*(\*|\d+)?(?:\.(\*|\d*))?")
 
 
-class Limit(Exception):
-    """A length or integer budget would be exceeded."""
+class _Stop(Exception):
+    """A budget stop or a refusal: the first one of a program is remembered in STOPPED."""
 
     def __init__(self, message: str):
         global STOPPED
@@ -44,16 +44,14 @@ class Limit(Exception):
             STOPPED = self
 
 
-class Forbidden(Exception):
+class Limit(_Stop):
+    """A length or integer budget would be exceeded."""
+
+
+class Forbidden(_Stop):
     """A construct outside the allowed subset (found before running, or at run time)."""
 
     position = (0, 0)
-
-    def __init__(self, message: str):
-        global STOPPED
-        super().__init__(message)
-        if STOPPED is None:
-            STOPPED = self
 
 
 def too_long(n):
