@@ -192,7 +192,7 @@ def converted(value, conversion: int):
     if conversion == 114:
         return to_repr(value)
     if conversion == 97:
-        return checked_len(ascii(value))
+        return to_ascii(value)
     return value
 
 
@@ -218,6 +218,10 @@ def to_str(*args, **kwargs):
 
 def to_repr(value):
     return checked_len(repr(value))
+
+
+def to_ascii(value):
+    return checked_len(ascii(value))
 
 
 class _TypeLike(type):

@@ -134,7 +134,7 @@ class _Walk:
 def _name(node, name: str, store: bool, walk: _Walk):
     if name[0] == "$":  # ours: no Python source can spell it
         return
-    if name[:2] == "__":
+    if name[0] == "_" and name[:2] == "__":
         _fail(node, f"names starting with two underscores reach the interpreter: {name}")
     if store:
         if name in PROVIDED:
@@ -369,7 +369,8 @@ def instrument(tree: ast.Module) -> ast.Module:
                 rule(node, walk)
             for field, many in fields:
                 value = getattr(node, field)
-                for k, child in enumerate(value) if many else ((None, value),):
+                k = 0  # where the last replaced child was: each list is searched once, in order
+                for child in value if many else (value,):
                     ct = type(child)
                     if ct is const_type or child is None:
                         continue
@@ -385,6 +386,7 @@ def instrument(tree: ast.Module) -> ast.Module:
                         new = wrap(child, wrapped)
                         if new is not child:
                             if many:
+                                k = value.index(child, k)  # nodes compare by identity
                                 value[k] = new
                             else:
                                 setattr(node, field, new)

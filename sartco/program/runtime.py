@@ -1,7 +1,7 @@
 """Run one prepared program on a fresh board, inside the worker process.
 
-The program's globals are `board`, `put`, `init_board`; its `__builtins__` is a fresh copy of
-BUILTINS: the allowed builtins (some with budgets, see budget.py: `range`, `round`, `sum`,
+The program's globals are `board`, `put`, `init_board`; its `__builtins__` is BUILTINS (no
+program can reach the dict, so one serves them all; `$t` is set per program): the allowed builtins (some with budgets, see budget.py: `range`, `round`, `sum`,
 `int`, `str`, `repr`, `pow`, `format`; `print` does nothing), a refusing stand-in for every
 other builtin name (calling it is `forbidden`), `__import__` for the stand-in modules
 (modules.py), and the `$` helpers that check.py inserted. The result board is the global
@@ -88,7 +88,7 @@ class _Refused:
 _OWN = {  # builtins of ours (with budgets); the rest of ALLOWED_BUILTINS are Python's own
     "range": budget.checked_range, "round": budget.checked_round, "sum": budget.checked_sum,
     "print": budget.no_print, "int": budget.INT, "str": budget.STR, "pow": budget.power,
-    "format": budget.format_value, "repr": budget.to_repr,
+    "format": budget.format_value, "repr": budget.to_repr, "ascii": budget.to_ascii,
 }
 BUILTINS = {
     **{name: _Refused(name) for name in DENIED},
@@ -218,9 +218,8 @@ def run(compiled: tuple, rows: int, cols: int, limits) -> list:
 
     budget.LENGTH, budget.INT_BITS, budget.STOPPED = limits.length, limits.int_bits, None
     _STEPS = steps = repeat(True, limits.steps)
-    names = dict(BUILTINS)
-    names["$t"] = steps.__next__
-    env = {"__builtins__": names, "board": board, "put": put, "init_board": init_board}
+    BUILTINS["$t"] = steps.__next__  # no program can reach the dict: one serves them all
+    env = {"__builtins__": BUILTINS, "board": board, "put": put, "init_board": init_board}
     old_limit = sys.getrecursionlimit()
     error = None
     try:
@@ -242,7 +241,6 @@ def run(compiled: tuple, rows: int, cols: int, limits) -> list:
         if type(result_board) is not Board:
             result_board = last[0]
         env.clear()
-        names.clear()
         cells, puts = result_board.cells(), result_board.puts
         message = clean(message)
     except MemoryError:

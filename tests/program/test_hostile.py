@@ -136,6 +136,8 @@ HOSTILE = [
     ("zfill bomb", "x = '1'.zfill(10**9)", R, None),
     ("str of shared lists", "x = [[0] * 1000] * 1000\ns = str(x)", R, None),
     ("repr of shared lists", "x = [[0] * 1000] * 1000\ns = repr(x)", R, None),
+    ("ascii of shared lists", "x = [['\u00e9'] * 1000] * 1000\ns = ascii(x)", R, None),
+    ("f-string repr of shared lists", "x = [[0] * 1000] * 1000\ns = f'{x!r}'", R, None),
     ("printf of a big list", "x = [[0] * 1000] * 1000\ns = '%s' % (x,)", R, None),
     ("format of a big list", "x = [[0] * 1000] * 1000\ns = '{}'.format(x)", R, None),
     ("factorial", "import math\nx = math.factorial(10**6)", R, None),
