@@ -34,8 +34,8 @@ memory, source size); no handler catches them (nor a refusal), and they stay the
 program swallows them. A program that crashes its worker gets `runtime_error` "crashed (SIGSEGV)".
 
 No program spoils another: a worker retires after a budget stop, a MemoryError, an internal
-error or 64 MB of peak memory growth, and the next program runs in a fresh one; verdicts are
-cached only when they depend on the source alone; messages are cleaned of control characters
+error, or a program after which it holds 64 MB more than at its start, and the next program
+runs in a fresh one; verdicts are cached only when they depend on the source alone; messages are cleaned of control characters
 and lone surrogates before anything writes them; workers die with their parent process.
 
 

@@ -14,7 +14,8 @@ stopped any other way). The worker never outlives the parent: it exits when its 
 and the kernel kills it when the parent dies (PR_SET_PDEATHSIG), even inside a long C loop.
 
 A worker that must not run another program (runtime.SPOILED after a budget stop, a MemoryError
-or an internal error, or a peak memory more than RETIRE_BYTES above its start) writes that
+or an internal error, or resident memory more than RETIRE_BYTES above its start after a program,
+e.g. a reference cycle the program left behind) writes that
 program's answer with a leading "!" and exits: the parent passes the answer on and sends the
 rest of the batch to a fresh worker. So no program starts in a worker that a previous one
 filled, and nothing a failure left behind (caches, cycles) is seen again.
@@ -37,7 +38,7 @@ import time
 
 
 OUT_OF_MEMORY = 3  # exit status: the parent reports resource_limit for the current item
-RETIRE_BYTES = 64 * 1024 * 1024  # peak memory growth after which a worker retires
+RETIRE_BYTES = 64 * 1024 * 1024  # resident memory growth after which a worker retires
 PR_SET_PDEATHSIG = 1
 AHEAD_SHARE = 0.1  # of Limits.wall_time: the longest a worker compiles a batch ahead
 
@@ -70,8 +71,16 @@ def _die_with_parent(parent: int) -> None:
         os._exit(0)
 
 
-def _peak() -> int:
-    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024  # Linux: kilobytes
+def _resident_meter():
+    """A function giving this process's resident memory in bytes now: one pread() of
+    /proc/self/statm (a few microseconds). Not getrusage's peak: after exec that includes the
+    parent's peak, which may be far above anything this worker holds."""
+    page = os.sysconf("SC_PAGE_SIZE")
+    try:
+        fd = os.open("/proc/self/statm", os.O_RDONLY | os.O_CLOEXEC)
+    except OSError:  # not Linux: only runtime.SPOILED retires a worker
+        return lambda: 0
+    return lambda: int(os.pread(fd, 128, 0).split()[1]) * page
 
 
 def main(parent: int = 0) -> int:
@@ -86,7 +95,8 @@ def main(parent: int = 0) -> int:
         _limit(kind, 0)
     gc.freeze()  # startup objects are never collected: cheaper collections later
     base = _vm_bytes()
-    retire_at = _peak() + RETIRE_BYTES
+    resident = _resident_meter()
+    retire_at = resident() + RETIRE_BYTES
     memory = None
     inp, out = sys.stdin.buffer, sys.stdout.buffer
     out.write(b'"ready"\n')
@@ -137,7 +147,7 @@ def main(parent: int = 0) -> int:
                 else:
                     job = prepare(item)
                 text = answer(job).encode("ascii")
-                if runtime.SPOILED or _peak() > retire_at:
+                if runtime.SPOILED or resident() > retire_at:
                     out.write(b"!" + text + b"\n")
                     out.flush()
                     os._exit(0)

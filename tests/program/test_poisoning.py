@@ -14,6 +14,7 @@ The attacks:
 import json
 import os
 import select
+import signal
 import subprocess
 import sys
 import time
@@ -114,8 +115,10 @@ def test_sartco_execute_line_by_line_after_attacks(gold):
     assert proc.returncode == 0, proc.stderr.read().decode()
 
 
-def test_workers_die_with_their_parent(tmp_path):
-    """A parent killed (SIGKILL) while its worker runs a long C loop takes the worker with it."""
+@pytest.mark.parametrize("how", [signal.SIGKILL, signal.SIGTERM])
+def test_workers_die_with_their_parent(how):
+    """A parent killed (SIGKILL, SIGTERM) while its worker runs a long C loop takes the worker
+    with it."""
     script = (
         "import sys, threading\n"
         "from sartco.program import execute, pool\n"
@@ -127,7 +130,7 @@ def test_workers_die_with_their_parent(tmp_path):
     proc = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE)
     worker = int(_readline(proc))
     time.sleep(0.5)  # the worker is inside the C loop now
-    proc.kill()
+    proc.send_signal(how)
     proc.wait()
     for _ in range(100):
         if not _alive(worker):
