@@ -10,7 +10,9 @@ out: {"id", "ok", "error": null | code, "message", "cells"} and, when a target w
 A program that fails has es 0 and its error as the category; P/R/F1 are still computed on the
 board it built so far. A malformed line (not JSON, not an object, id/code/target of the wrong
 type) gives {"id": <its id if a string, else null>, "ok": false, "error": "parse_error",
-"message": "input line N: ...", "cells": {}} and no comparison fields.
+"message": "input line N: ...", "cells": {}} and no comparison fields. Ids and messages are
+written clean (records.clean: no lone surrogates or control characters), so that every output
+line is strict JSON and valid UTF-8 whatever the program or the input held.
 """
 from __future__ import annotations
 
@@ -21,6 +23,7 @@ from sartco.world import ErrorCode
 from sartco.world.board import KEY
 
 from .compare import compare
+from .records import clean
 
 KEYS = re.compile(rf"{KEY.pattern}(?:,{KEY.pattern})*")  # keys joined by commas
 # the output holds only fresh dicts, lists and strings (no cycles): skip the encoder's cycle check
@@ -68,7 +71,7 @@ def parse_line(number: int, raw: bytes, check_target: bool = True):
 
 
 def answer(ident, ok: bool, error, message: str, cells: dict, target) -> dict:
-    out = {"id": ident, "ok": ok, "error": error, "message": message, "cells": cells}
+    out = {"id": clean(ident), "ok": ok, "error": error, "message": clean(message), "cells": cells}
     if target is not None:
         cmp = compare(cells, target)
         out["es"] = cmp.es if ok else 0
@@ -78,7 +81,8 @@ def answer(ident, ok: bool, error, message: str, cells: dict, target) -> dict:
 
 
 def malformed(ident, problem: str) -> dict:
-    return {"id": ident, "ok": False, "error": ErrorCode.PARSE_ERROR, "message": problem, "cells": {}}
+    return {"id": None if ident is None else clean(ident), "ok": False, "error": ErrorCode.PARSE_ERROR,
+            "message": clean(problem), "cells": {}}
 
 
 def finish(number: int, parsed: tuple, run) -> str:

@@ -11,7 +11,9 @@ so the parent only routes bytes); `execute` is a batch of one.
 A worker answers each program on its own line, so the parent knows which program is running and
 gives each one `Limits.wall_time` seconds from the moment the previous answer was read. A late
 answer kills the worker (SIGKILL, then reaped) and the program gets `timeout`; a worker that
-dies gets its program `resource_limit` (killed by a signal, e.g. memory) or `runtime_error`.
+dies gets its program `resource_limit` (out of memory: its own exit status, or SIGKILL from the
+kernel) or `runtime_error` (a crash, named by its signal, or another exit). A worker that
+retires after an answer (a leading "!", see worker.py) is replaced before the next program.
 The rest of the batch goes to a fresh worker. A worker compiles each chunk ahead (worker.py), for
 at most a tenth of a wall time, which the chunk's first program shares: so a kill before the first
 answer of a chunk of several blames nobody yet, and the rest runs again, each program compiled
@@ -27,11 +29,13 @@ import fcntl
 import json
 import os
 import select
+import signal
 import subprocess
 import sys
 import threading
 import time
 from collections import deque
+from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, Board, ErrorCode, WorldError
@@ -50,8 +54,9 @@ READ_SIZE = 1 << 16  # bytes per read (a read allocates its whole size first)
 _ROOT = str(Path(__file__).resolve().parents[2])
 _BOOT = (
     "import sys; sys.path.insert(0, sys.argv[1]); "
-    "from sartco.program.worker import main; sys.exit(main())"
+    "from sartco.program.worker import main; sys.exit(main(int(sys.argv[2])))"
 )
+RETIRED = b"!"  # the first byte of the last answer of a worker that retires (see worker.py)
 
 
 class _Dead(Exception):
@@ -68,11 +73,7 @@ class _Worker:
 
     # -- process ---------------------------------------------------------------------------
     def start(self):
-        self.proc = subprocess.Popen(
-            [sys.executable, "-I", "-S", "-c", _BOOT, _ROOT],
-            stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
-            close_fds=True, cwd="/",
-        )
+        self.proc = _spawn([sys.executable, "-I", "-S", "-c", _BOOT, _ROOT, str(os.getpid())])
         for pipe in (self.proc.stdin, self.proc.stdout):  # room for items sent ahead and answers that
             try:  # pile up while the parent waits (Linux; elsewhere the default size)
                 fcntl.fcntl(pipe.fileno(), fcntl.F_SETPIPE_SZ, PIPE_SIZE)
@@ -168,6 +169,10 @@ class _Worker:
                         E.TIMEOUT, f"the program ran longer than {limits.wall_time:g} s")
                 except (_Dead, OSError):
                     line, failure = None, _died(self.kill())
+                if line is not None and line[:1] == RETIRED:  # the worker retired after answering
+                    results.append(line[1:])
+                    self.kill()
+                    break
                 if line is not None:
                     results.append(line)
                     continue
@@ -185,11 +190,21 @@ class _Worker:
 
 
 def _died(status: int | None) -> Execution:
+    """The verdict of a program whose worker ended without answering it."""
     from .worker import OUT_OF_MEMORY
 
-    if status == OUT_OF_MEMORY or (status is not None and status < 0):
-        return _failed(E.RESOURCE_LIMIT, f"the sandbox worker ran out of memory or was stopped (status {status})")
-    return _failed(E.RUNTIME_ERROR, f"the sandbox worker ended (status {status})")
+    if status == OUT_OF_MEMORY:
+        return _failed(E.RESOURCE_LIMIT, "the sandbox worker ran out of memory")
+    if status in (-signal.SIGKILL, -signal.SIGXCPU):  # the kernel's OOM killer or a CPU limit
+        return _failed(E.RESOURCE_LIMIT, f"the sandbox worker was killed ({signal.Signals(-status).name}): "
+                                         f"out of memory or CPU time")
+    if status is not None and status < 0:
+        try:
+            name = signal.Signals(-status).name
+        except ValueError:
+            name = f"signal {-status}"
+        return _failed(E.RUNTIME_ERROR, f"the program crashed the sandbox worker ({name})")
+    return _failed(E.RUNTIME_ERROR, f"the sandbox worker ended unexpectedly (status {status})")
 
 
 def _failed(code: ErrorCode, message: str) -> Execution:
@@ -207,6 +222,24 @@ def _decode(line: bytes) -> Execution:
 
 
 # --- the pool -----------------------------------------------------------------------------------
+
+_spawner: tuple[int, ThreadPoolExecutor] | None = None  # (pid, executor)
+_spawner_lock = threading.Lock()
+
+
+def _spawn(argv: list[str]) -> subprocess.Popen:
+    """Start a worker from one long-lived thread: a worker's parent-death signal fires when the
+    thread that started it ends (prctl(2)), and the threads that drive workers come and go."""
+    global _spawner
+    with _spawner_lock:
+        if _spawner is None or _spawner[0] != os.getpid():
+            _spawner = (os.getpid(), ThreadPoolExecutor(1, thread_name_prefix="sartco-spawner"))
+        executor = _spawner[1]
+    return executor.submit(
+        subprocess.Popen, argv, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+        close_fds=True, cwd="/",
+    ).result()
+
 
 _workers: list[_Worker] = []
 _pool_pid = None

@@ -1,6 +1,7 @@
 """The records of `sartco.program`: budgets in, results out (frozen, slotted, JSON-friendly)."""
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 
 from sartco.world import ErrorCode
@@ -63,3 +64,20 @@ class Comparison:
 def not_a_str(program) -> str:
     """What is wrong with a program that is not a str (said by the parent and the worker alike)."""
     return f"the program must be a str, not {type(program).__name__}"
+
+
+# control characters, lone surrogates and the bidirectional overrides: none of them may reach
+# JSON (a lone surrogate is not Unicode), clemcore's files or a transcript
+_UNSAFE = re.compile("[\x00-\x1f\x7f-\x9f\ud800-\udfff\u202a-\u202e\u2066-\u2069]")
+
+
+def _replacement(match) -> str:
+    return " " if match.group() in "\t\n\r" else "\ufffd"
+
+
+def clean(text: str) -> str:
+    """`text` safe to write anywhere: tabs and line breaks become spaces, other control
+    characters, lone surrogates and bidi overrides become U+FFFD."""
+    if text.isascii() and text.isprintable():
+        return text
+    return _UNSAFE.sub(_replacement, text)

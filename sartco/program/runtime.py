@@ -1,193 +1,103 @@
 """Run one prepared program on a fresh board, inside the worker process.
 
-The program's globals are `board`, `put`, `init_board`; its `__builtins__` is a small dict of
-the allowed builtins (some wrapped: `range`, `round`, `sum`, `print`) plus the `$` helpers that
-`check.py` inserted. The result board is the global `board` if it is a Board, else the most
-recently created board. Every outcome is turned into `[ok, code, message, cells, puts]`.
+The program's globals are `board`, `put`, `init_board`; its `__builtins__` is BUILTINS (no
+program can reach the dict, so one serves them all; `$t` is set per program): the allowed builtins (some with budgets, see budget.py: `range`, `round`, `sum`,
+`int`, `str`, `repr`, `pow`, `format`; `print` does nothing), a refusing stand-in for every
+other builtin name (calling it is `forbidden`), `__import__` for the stand-in modules
+(modules.py), and the `$` helpers that check.py inserted. The result board is the global
+`board` if it is a Board, else the most recently created board. Every outcome is turned into
+`[ok, code, message, cells, puts]`, the message cleaned (records.clean).
 
 Python exceptions map to codes: NameError -> name_error, TypeError -> type_error, ValueError ->
 value_error, KeyError -> key_error, IndexError -> index_error, ZeroDivisionError ->
 zero_division, RecursionError/MemoryError/OverflowError and exhausted length/integer budgets ->
-resource_limit, a spent step budget -> timeout, WorldError -> its own code, Forbidden (a method
-on an object that is not a list/dict/str/tuple, printf-style %) -> forbidden, anything else ->
-runtime_error. A method that the object's (allowed) type lacks raises AttributeError, as in
-plain Python, hence runtime_error.
+resource_limit, a spent step budget -> timeout, WorldError -> its own code, Forbidden (an
+attribute on a type outside TYPE_METHODS, a refused builtin or format field) -> forbidden,
+anything else (AssertionError, RuntimeError, AttributeError, ...) -> runtime_error. A budget
+stop or refusal is the verdict even when the program swallowed it (budget.STOPPED, a spent step
+counter). After a budget stop, a MemoryError or an internal error, SPOILED tells the worker to
+retire; no internal error ever ends as `ok`, and only verdicts that depend on the source alone
+are cached.
 """
 from __future__ import annotations
 
+import builtins
 import gc
-import math
 import sys
 from itertools import repeat
 from operator import length_hint
 
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, Board, ErrorCode, WorldError, put
 
-from .check import TYPE_METHODS, Forbidden, prepare
-from .records import not_a_str
+from . import budget
+from .budget import CHECKED_METHODS, Forbidden, Limit
+from .check import ALLOWED_BUILTINS, DENIED, TYPE_METHODS, prepare
+from .modules import Module, import_module
+from .records import clean, not_a_str
 
 E = ErrorCode
-INTS = (int, bool)
-SEQS = frozenset({list, tuple, str, bytes})
-SIZED = frozenset({list, tuple, str, bytes, dict, set, frozenset, range})
 MESSAGE_CHARS = 400
 CACHE_SIZE = 4096
-
-# the current budgets, set by run() before each program (one program at a time per worker)
-LENGTH = 1_000_000
-INT_BITS = 65_536
-
-
-class Limit(Exception):
-    """A length or integer budget would be exceeded."""
-
-
-def _too_long(n):
-    raise Limit(f"a sequence of {n} items is longer than the limit of {LENGTH}")
-
-
-def _too_big(bits):
-    raise Limit(f"an integer of about {int(bits)} bits is larger than the limit of {INT_BITS}")
-
-
-# --- checked operators ------------------------------------------------------------------------
-
-def _add(a, b):
-    ta = type(a)
-    if ta in SEQS and type(b) is ta and len(a) + len(b) > LENGTH:
-        _too_long(len(a) + len(b))
-    return a + b
-
-
-def _mul(a, b):
-    ta, tb = type(a), type(b)
-    if ta in INTS:
-        if tb in INTS:
-            if a.bit_length() + b.bit_length() > INT_BITS:
-                _too_big(a.bit_length() + b.bit_length())
-        elif tb in SEQS and a > 0 and len(b) * a > LENGTH:
-            _too_long(len(b) * a)
-    elif ta in SEQS and tb in INTS and b > 0 and len(a) * b > LENGTH:
-        _too_long(len(a) * b)
-    return a * b
-
-
-def _pow(a, b):
-    if type(a) in INTS and type(b) in INTS and b > 0 and (a > 1 or a < -1):
-        bits = b * math.log2(abs(a))
-        if bits > INT_BITS:
-            _too_big(bits)
-    return a ** b
-
-
-def _lshift(a, b):
-    if type(a) in INTS and type(b) in INTS and a and b > 0 and a.bit_length() + b > INT_BITS:
-        _too_big(a.bit_length() + b)
-    return a << b
-
-
-def _mod(a, b):
-    if type(a) is str or type(a) is bytes:
-        raise Forbidden("printf-style % formatting is not allowed; use an f-string")
-    return a % b
-
-
-def _grow(lst, items):
-    """lst.extend(items) within the length budget: checked before for sized items, after for
-    any other iterable."""
-    n = len(items) if type(items) in SIZED else 0
-    if len(lst) + n > LENGTH:
-        _too_long(len(lst) + n)
-    lst.extend(items)
-    if len(lst) > LENGTH:
-        _too_long(len(lst))
-
-
-def _iadd(a, b):
-    if type(a) is list:  # list += is list.extend
-        _grow(a, b)
-        return a
-    return _add(a, b)
-
-
-def _imul(a, b):
-    if type(a) is not list:
-        return _mul(a, b)
-    if type(b) in INTS and b > 0 and len(a) * b > LENGTH:
-        _too_long(len(a) * b)
-    a *= b
-    return a
-
-
-def _iitem(obj, key, op, value):
-    """obj[key] op= value, `op` being one of the checked in-place helpers ($iadd, ...)."""
-    obj[key] = op(obj[key], value)
-
-
-def _len(s):
-    if len(s) > LENGTH:
-        _too_long(len(s))
-    return s
+SPOILED = False  # set when this worker must not run another program (the worker then exits)
+_STEPS = repeat(True, 0)  # the current program's step counter
 
 
 def _attr(obj, name):
-    allowed = TYPE_METHODS.get(type(obj))
+    t = type(obj)
+    if t is Module:
+        try:
+            return obj.__dict__[name]
+        except KeyError:
+            raise AttributeError(f"module {obj.__dict__['__name__']!r} has no attribute {name!r} in the sandbox") from None
+    allowed = TYPE_METHODS.get(t)
     if allowed is None:
-        raise Forbidden(f".{name} is allowed only on lists, dicts, strings and tuples, not on {type(obj).__name__}")
+        raise Forbidden(f".{name} is allowed only on str, list, dict, set, tuple and the allowed modules, "
+                        f"not on {t.__name__}")
     if name not in allowed:
-        raise AttributeError(f"'{type(obj).__name__}' object has no attribute '{name}'")
-    if name == "extend":
-        return _extender(obj)
-    return getattr(obj, name)
+        raise AttributeError(f"'{t.__name__}' object has no attribute '{name}'")
+    checked = CHECKED_METHODS.get(name)
+    return getattr(obj, name) if checked is None else checked(obj)
 
 
-def _extender(obj):
-    def extend(items):
-        _grow(obj, items)
-    return extend
+def _caught(exc):
+    """The first statement of every except handler: budget stops and refusals go on."""
+    global SPOILED
+    if isinstance(exc, MemoryError):
+        SPOILED = True
+    if isinstance(exc, (Limit, Forbidden, MemoryError, RecursionError)) or length_hint(_STEPS) == 0:
+        raise exc
 
 
-# --- wrapped builtins -------------------------------------------------------------------------
+class _Refused:
+    """A builtin that reaches the interpreter, files or the terminal, for a program that reads
+    its name without binding it (check.py refuses the plain case before running)."""
 
-def _range(*args):
-    r = range(*args)
-    try:
-        n = len(r)
-    except OverflowError:
-        n = math.inf
-    if n > LENGTH:
-        raise Limit(f"range of {n} items is longer than the limit of {LENGTH}")
-    return r
+    __slots__ = ("name",)
 
+    def __init__(self, name):
+        self.name = name
 
-def _round(number, ndigits=None):
-    if ndigits is not None and type(ndigits) in INTS and abs(ndigits) > 10_000:
-        raise Limit(f"round() with ndigits={ndigits} is not allowed")
-    return round(number) if ndigits is None else round(number, ndigits)
+    def __call__(self, *args, **kwargs):
+        raise Forbidden(f"{self.name} is not available in the sandbox: it reaches the interpreter, files or "
+                        f"the terminal")
+
+    def __repr__(self):
+        return f"<{self.name}: not available in the sandbox>"
 
 
-def _sum(iterable, start=0):
-    if type(start) in SEQS:
-        items = list(iterable)
-        total = len(start) + sum(len(x) for x in items if type(x) in SIZED)
-        if total > LENGTH:
-            _too_long(total)
-        return sum(items, start)
-    return sum(iterable, start)
-
-
-def _print(*args, **kwargs):
-    return None
-
-
+_OWN = {  # builtins of ours (with budgets); the rest of ALLOWED_BUILTINS are Python's own
+    "range": budget.checked_range, "round": budget.checked_round, "sum": budget.checked_sum,
+    "print": budget.no_print, "int": budget.INT, "str": budget.STR, "pow": budget.power,
+    "format": budget.format_value, "repr": budget.to_repr, "ascii": budget.to_ascii,
+}
 BUILTINS = {
-    "range": _range, "zip": zip, "enumerate": enumerate, "len": len, "min": min, "max": max,
-    "abs": abs, "sum": _sum, "sorted": sorted, "reversed": reversed, "any": any, "all": all,
-    "round": _round, "divmod": divmod, "int": int, "str": str, "bool": bool, "list": list,
-    "tuple": tuple, "dict": dict, "set": set, "print": _print,
-    "$add": _add, "$mul": _mul, "$pow": _pow, "$lshift": _lshift, "$mod": _mod,
-    "$iadd": _iadd, "$imul": _imul, "$ipow": _pow, "$ilshift": _lshift, "$imod": _mod,
-    "$iitem": _iitem, "$slice": slice, "$len": _len, "$attr": _attr,
+    **{name: _Refused(name) for name in DENIED},
+    **{name: _OWN.get(name) or getattr(builtins, name) for name in ALLOWED_BUILTINS},
+    "__import__": import_module,  # what import statements call; no program can spell the name
+    "$add": budget.add, "$mul": budget.mul, "$pow": budget.power, "$lshift": budget.lshift, "$mod": budget.mod,
+    "$iadd": budget.iadd, "$imul": budget.imul, "$ipow": budget.power, "$ilshift": budget.lshift,
+    "$imod": budget.mod, "$iitem": budget.iitem, "$slice": slice, "$len": budget.checked_len,
+    "$attr": _attr, "$caught": _caught, "$fstr": budget.fstring_field,
 }
 
 # --- compile (cached by exact source text: the verdict and code object depend on nothing else) --
@@ -206,29 +116,39 @@ def compile_program(source: str, limits, cache: bool = True) -> tuple:
     if hit is not None:
         return hit
     collecting = gc.isenabled()
+    keep = cache  # only verdicts that depend on the source alone are cached
     try:
         # parsing allocates thousands of syntax-tree nodes that form no cycles (they are freed by
         # reference counting): the cyclic collector would only traverse them in vain
         gc.disable()
         result = (prepare(source), None, "")
     except Forbidden as exc:
-        result = (None, E.FORBIDDEN, str(exc))
+        result = (None, E.FORBIDDEN, clean(str(exc)))
     except SyntaxError as exc:
-        result = (None, E.SYNTAX_ERROR, f"line {exc.lineno}: {exc.msg}" if exc.lineno else str(exc.msg))
+        result = (None, E.SYNTAX_ERROR, clean(f"line {exc.lineno}: {exc.msg}" if exc.lineno else str(exc.msg)))
     except (ValueError, UnicodeError) as exc:  # e.g. null bytes, lone surrogates
-        result = (None, E.SYNTAX_ERROR, str(exc))
-    except (RecursionError, MemoryError) as exc:
-        result = (None, E.RESOURCE_LIMIT, f"the program is too deeply nested to compile ({type(exc).__name__})")
+        result = (None, E.SYNTAX_ERROR, clean(str(exc)))
+    except RecursionError:
+        result = (None, E.RESOURCE_LIMIT, "the program is too deeply nested to compile")
+    except MemoryError:  # the worker's memory, not the source: not cached, and the worker retires
+        result, keep = (None, E.RESOURCE_LIMIT, "the sandbox ran out of memory while compiling the program"), False
+        _spoil()
     except Exception as exc:  # noqa: BLE001 - a compiler failure must not end the worker
-        result = (None, E.RUNTIME_ERROR, f"{type(exc).__name__}: {exc}")
+        result, keep = (None, E.RUNTIME_ERROR, clean(f"internal error while compiling: {type(exc).__name__}: {exc}")), False
+        _spoil()
     finally:
         if collecting:
             gc.enable()
-    if cache:
+    if keep:
         if len(_cache) >= CACHE_SIZE:
             _cache.clear()
         _cache[source] = result
     return result
+
+
+def _spoil():
+    global SPOILED
+    SPOILED = True
 
 
 # --- run ----------------------------------------------------------------------------------------
@@ -253,8 +173,11 @@ def _describe(exc: BaseException) -> str:
             text = exc.message
         elif isinstance(exc, (Limit, Forbidden)):
             text = str(exc)
+        elif isinstance(exc, MemoryError):
+            text = "the program ran out of memory (MemoryError)"
         else:
-            text = f"{type(exc).__name__}: {exc}"
+            detail = str(exc)
+            text = f"{type(exc).__name__}: {detail}" if detail else type(exc).__name__
     except Exception:  # noqa: BLE001
         text = type(exc).__name__
     text = text[:MESSAGE_CHARS]
@@ -277,8 +200,9 @@ def _depth() -> int:
 
 def run(compiled: tuple, rows: int, cols: int, limits) -> list:
     """Run one program, given what compile_program made of it; return [ok, code or None,
-    message, cells, puts]."""
-    global LENGTH, INT_BITS
+    message, cells, puts]. The message is clean (records.clean). A budget stop, a MemoryError or
+    an internal error sets SPOILED: the worker answers, then retires."""
+    global _STEPS
     code, error, message = compiled
     try:
         board = Board(rows, cols)
@@ -292,11 +216,10 @@ def run(compiled: tuple, rows: int, cols: int, limits) -> list:
         last[0] = Board(rows, cols)
         return last[0]
 
-    LENGTH, INT_BITS = limits.length, limits.int_bits
-    steps = repeat(True, limits.steps)
-    names = dict(BUILTINS)
-    names["$t"] = steps.__next__
-    env = {"__builtins__": names, "board": board, "put": put, "init_board": init_board}
+    budget.LENGTH, budget.INT_BITS, budget.STOPPED = limits.length, limits.int_bits, None
+    _STEPS = steps = repeat(True, limits.steps)
+    BUILTINS["$t"] = steps.__next__  # no program can reach the dict: one serves them all
+    env = {"__builtins__": BUILTINS, "board": board, "put": put, "init_board": init_board}
     old_limit = sys.getrecursionlimit()
     error = None
     try:
@@ -306,18 +229,33 @@ def run(compiled: tuple, rows: int, cols: int, limits) -> list:
         finally:
             sys.setrecursionlimit(old_limit)
     except BaseException as exc:  # noqa: BLE001 - everything the program does ends here
-        if length_hint(steps) == 0:
-            error, message = E.TIMEOUT, f"the program used up its budget of {limits.steps} steps (loop iterations and calls)"
-        else:
-            error, message = _classify(exc), _describe(exc)
+        error, message = _verdict(exc, limits)
         del exc
-    result_board = env.get("board")
-    if type(result_board) is not Board:
-        result_board = last[0]
-    env.clear()
-    names.clear()
+    # a budget stop or refusal that the program swallowed (finally: return, a StopIteration
+    # ending a map() early) is still its verdict
+    if length_hint(steps) == 0 or budget.STOPPED is not None:
+        error, message = _verdict(budget.STOPPED, limits)
+    budget.STOPPED = None
     try:
+        result_board = env.get("board")
+        if type(result_board) is not Board:
+            result_board = last[0]
+        env.clear()
         cells, puts = result_board.cells(), result_board.puts
+        message = clean(message)
     except MemoryError:
-        cells, puts = {}, 0
+        error, message, cells, puts = E.RESOURCE_LIMIT, "the sandbox ran out of memory while reading the board", {}, 0
+    except Exception as exc:  # noqa: BLE001 - never `ok` after an internal error
+        error, message, cells, puts = E.RUNTIME_ERROR, clean(f"internal error: {type(exc).__name__}"), {}, 0
+        _spoil()
+    if error in (E.TIMEOUT, E.RESOURCE_LIMIT):
+        _spoil()
     return [error is None, error, message, cells, puts]
+
+
+def _verdict(exc: BaseException | None, limits) -> tuple:
+    if length_hint(_STEPS) == 0:
+        return E.TIMEOUT, f"the program used up its budget of {limits.steps} steps (loop iterations and calls)"
+    if isinstance(exc, MemoryError):
+        _spoil()
+    return _classify(exc), _describe(exc)

@@ -10,7 +10,15 @@ Protocol (lines of bytes):
       mode "code": [ok, code, message, cells, puts]
       mode "line": the finished output line of `sartco execute` (see lines.py).
 The parent times each answer and kills the worker when one is late (a loop in C code cannot be
-stopped any other way); the worker exits when its stdin closes, so it never outlives the parent.
+stopped any other way). The worker never outlives the parent: it exits when its stdin closes,
+and the kernel kills it when the parent dies (PR_SET_PDEATHSIG), even inside a long C loop.
+
+A worker that must not run another program (runtime.SPOILED after a budget stop, a MemoryError
+or an internal error, or resident memory more than RETIRE_BYTES above its start after a program,
+e.g. a reference cycle the program left behind) writes that
+program's answer with a leading "!" and exits: the parent passes the answer on and sends the
+rest of the batch to a fresh worker. So no program starts in a worker that a previous one
+filled, and nothing a failure left behind (caches, cycles) is seen again.
 With "ahead" (and K > 1) the worker first parses and compiles the batch's programs, for at most
 AHEAD_SHARE of a wall time, then runs them one by one: the parser and compiler stay warm in the
 CPU caches, about 5 % less work per program than alternating compiling with running. Each
@@ -30,6 +38,8 @@ import time
 
 
 OUT_OF_MEMORY = 3  # exit status: the parent reports resource_limit for the current item
+RETIRE_BYTES = 64 * 1024 * 1024  # resident memory growth after which a worker retires
+PR_SET_PDEATHSIG = 1
 AHEAD_SHARE = 0.1  # of Limits.wall_time: the longest a worker compiles a batch ahead
 
 
@@ -48,15 +58,45 @@ def _limit(kind, soft):
         pass
 
 
-def main() -> int:
+def _die_with_parent(parent: int) -> None:
+    """SIGKILL when the thread that started this worker (pool.py's spawner) ends."""
+    import ctypes
+    import signal
+
+    try:
+        ctypes.CDLL(None, use_errno=True).prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+    except (OSError, AttributeError):  # not Linux: the stdin pipe still ends the worker
+        pass
+    if parent and os.getppid() != parent:  # the parent died before prctl
+        os._exit(0)
+
+
+def _resident_meter():
+    """A function giving this process's resident memory in bytes now: one pread() of
+    /proc/self/statm (a few microseconds). Not getrusage's peak: after exec that includes the
+    parent's peak, which may be far above anything this worker holds."""
+    page = os.sysconf("SC_PAGE_SIZE")
+    try:
+        fd = os.open("/proc/self/statm", os.O_RDONLY | os.O_CLOEXEC)
+    except OSError:  # not Linux: only runtime.SPOILED retires a worker
+        return lambda: 0
+    return lambda: int(os.pread(fd, 128, 0).split()[1]) * page
+
+
+def main(parent: int = 0) -> int:
+    from . import runtime
     from .lines import encode, finish, parse_line
     from .records import Limits
     from .runtime import compile_program, run
+
+    _die_with_parent(parent)
 
     for kind in (resource.RLIMIT_CORE, resource.RLIMIT_FSIZE, resource.RLIMIT_NPROC):
         _limit(kind, 0)
     gc.freeze()  # startup objects are never collected: cheaper collections later
     base = _vm_bytes()
+    resident = _resident_meter()
+    retire_at = resident() + RETIRE_BYTES
     memory = None
     inp, out = sys.stdin.buffer, sys.stdout.buffer
     out.write(b'"ready"\n')
@@ -106,8 +146,12 @@ def main() -> int:
                     job, jobs[k] = jobs[k], None
                 else:
                     job = prepare(item)
-                text = answer(job)
-                out.write(text.encode("ascii") + b"\n")
+                text = answer(job).encode("ascii")
+                if runtime.SPOILED or resident() > retire_at:
+                    out.write(b"!" + text + b"\n")
+                    out.flush()
+                    os._exit(0)
+                out.write(text + b"\n")
                 out.flush()
         except MemoryError:  # outside the program's own run: give up, the parent reports it
             os._exit(OUT_OF_MEMORY)
@@ -115,4 +159,4 @@ def main() -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(main(int(sys.argv[1]) if len(sys.argv) > 1 else 0))

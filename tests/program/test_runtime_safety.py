@@ -1,0 +1,127 @@
+"""The worker's own failures never become a verdict they do not deserve: a MemoryError while
+compiling is not cached, a MemoryError or an internal error while reading the board is never
+`ok`, messages come out clean, a crash is named as a crash, and the checker stays linear.
+These run runtime.compile_program / runtime.run in this process (the worker's code, without the
+worker), with the failures injected."""
+import time
+
+import pytest
+
+from sartco.program import Limits, execute, pool, runtime
+from sartco.program.check import prepare
+from sartco.program.records import clean
+from sartco.world import Board, ErrorCode
+
+E = ErrorCode
+L = Limits()
+
+
+@pytest.fixture(autouse=True)
+def fresh_runtime(monkeypatch):
+    monkeypatch.setattr(runtime, "SPOILED", False)
+    runtime._cache.clear()
+    yield
+    runtime._cache.clear()
+
+
+def test_memory_error_while_compiling_is_not_cached(monkeypatch):
+    source = "put(board, 'nut', 'red', 0, 0)"
+    calls = []
+
+    def flaky(text):
+        calls.append(text)
+        if len(calls) == 1:
+            raise MemoryError
+        return prepare(text)
+
+    monkeypatch.setattr(runtime, "prepare", flaky)
+    first = runtime.compile_program(source, L)
+    assert first[1] == E.RESOURCE_LIMIT and runtime.SPOILED
+    second = runtime.compile_program(source, L)
+    assert second[1] is None, "the failure was cached as the program's verdict"
+    assert runtime.run(second, 8, 8, L)[:4] == [True, None, "", {"0:0": [["nut", "red"]]}]
+
+
+def test_internal_compile_error_is_not_cached(monkeypatch):
+    def broken(text):
+        raise AssertionError("compiler bug")
+
+    monkeypatch.setattr(runtime, "prepare", broken)
+    result = runtime.compile_program("x = 1", L)
+    assert result[1] == E.RUNTIME_ERROR and "internal error" in result[2]
+    assert "x = 1" not in runtime._cache and runtime.SPOILED
+
+
+@pytest.mark.parametrize("failure,code", [(MemoryError, E.RESOURCE_LIMIT), (RuntimeError, E.RUNTIME_ERROR)])
+def test_failure_while_reading_the_board_is_never_ok(monkeypatch, failure, code):
+    def cells(self):
+        raise failure
+
+    monkeypatch.setattr(Board, "cells", cells)
+    ok, error, message, got, puts = runtime.run(runtime.compile_program("put(board, 'nut', 'red', 0, 0)", L), 8, 8, L)
+    assert (ok, error, got) == (False, code, {})
+    assert message and runtime.SPOILED
+
+
+@pytest.mark.parametrize("program,code", [
+    ("while True:\n    pass", E.TIMEOUT),
+    ("x = 'a' * 10**9", E.RESOURCE_LIMIT),
+    ("def f(n):\n    return f(n + 1)\nf(0)", E.RESOURCE_LIMIT),
+])
+def test_budget_stops_retire_the_worker(program, code):
+    assert runtime.run(runtime.compile_program(program, L), 8, 8, Limits(steps=10_000))[1] == code
+    assert runtime.SPOILED
+
+
+def test_ordinary_failures_keep_the_worker():
+    for program in ("put(board, 'nut', 'red', 9, 9)", "x = 1 / 0", "import os", "x = y"):
+        runtime.run(runtime.compile_program(program, L), 8, 8, L)
+    assert not runtime.SPOILED
+
+
+@pytest.mark.parametrize("program", [
+    "put(**{'\\ud800': 1})",
+    "raise ValueError('a\\x00b\\x1b[31mc\\u202ed\\ndone')",
+    "d = {}\nx = d['\\udc80\\x07']",
+])
+def test_messages_are_clean(program):
+    message = runtime.run(runtime.compile_program(program, L), 8, 8, L)[2]
+    assert message and message.isprintable()
+    message.encode("utf-8")
+
+
+def test_clean():
+    assert clean("plain text: (1, 2)") == "plain text: (1, 2)"
+    assert clean("a\ud800b\tc\r\nd\x00e\u202ef é ✓") == "a\ufffdb c  d\ufffde\ufffdf é ✓"
+
+
+@pytest.mark.parametrize("status,code,word", [
+    (-11, E.RUNTIME_ERROR, "SIGSEGV"), (-6, E.RUNTIME_ERROR, "SIGABRT"), (-9, E.RESOURCE_LIMIT, "SIGKILL"),
+    (3, E.RESOURCE_LIMIT, "memory"), (1, E.RUNTIME_ERROR, "status 1"),
+])
+def test_a_dead_worker_is_named(status, code, word):
+    ex = pool._died(status)
+    assert (ex.ok, ex.error) == (False, code) and word in ex.message
+
+
+def test_a_crash_is_reported_as_a_crash():
+    ex = execute("x = [1]\nfor i in range(300000):\n    x = map(abs, x)\ny = list(x)")
+    assert (ex.ok, ex.error) == (False, E.RUNTIME_ERROR) and "crashed" in ex.message and "SIGSEGV" in ex.message
+
+
+def test_checker_is_linear_in_the_program_size():
+    """A 100 KB list display (the case that was quadratic): checked and compiled like any program.
+    The times are printed, not asserted (the machine is shared)."""
+    for n in (5_000, 20_000):
+        source = "cells = [" + "(1, 2), " * n + "]\nput(board, 'nut', 'red', len(cells) % 8, 0)"
+        start = time.perf_counter()
+        compile(source, "<p>", "exec")
+        bare = time.perf_counter() - start
+        start = time.perf_counter()
+        code = prepare(source)
+        checked = time.perf_counter() - start
+        print(f"{len(source)} characters: compile() {bare * 1e3:.0f} ms, check + compile {checked * 1e3:.0f} ms "
+              f"(ratio {checked / bare:.1f})")
+        ex = execute(source, limits=Limits(source=200_000))
+        assert ex.ok and ex.cells == {f"{n % 8}:0": [["nut", "red"]]}, ex.message
+        assert code is not None
