@@ -130,7 +130,7 @@ def log_build(game_master, record: BuildRecord, *, final: bool = True) -> None:
     """Record a build in the episode: a GM->GM 'board' event for the transcript (the executed
     program and the category; `clem score` later links the board pictures to it) and, for the
     final build, the record under BUILD_KEY for the scorer."""
-    content = f"{record.summary()}\n\nexecuted program:\n{record.program or '(nothing: no code found)'}"
+    content = f"{record.summary()}\n\nexecuted program:\n{record.program or '(none: nothing was built)'}"
     game_master.log_event("GM", "GM", {"type": BOARD_EVENT, "content": content,
                                        "category": record.category})
     if final:
