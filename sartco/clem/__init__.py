@@ -10,4 +10,6 @@ live inside a game folder). Reuse these from any game whose player writes code:
 - scoring.BuildScorer                  scores.json from the recorded build
 - pictures.attach_all                  board pictures for transcripts, written at `clem score`
 - rulebased.RulebasedBackend           `-m rulebased` (the rule-based follower as a model)
+- describer / dialogue                 cobot_describe's Describer, its dialogue modes (questions,
+                                       corrections) and their scorer
 """

@@ -12,7 +12,8 @@ as Markdown and CSV:
   dialogue.md / .csv / dialogue_rounds.svg   cobot_describe's dialogue scores (sartco.scores.dialogue_table)
 Numbers are percentages over all episodes of a cell; an aborted episode (no code found) counts
 as 0 for EM, CB and ES, and is listed as parse_error in the error tables. Feedback experiments
-are kept out of table3 and the ablations (they are not the paper's protocol).
+and cobot_describe's dialogue modes are kept out of table3 and the ablations (they are not the
+paper's protocol).
 """
 from __future__ import annotations
 
@@ -238,7 +239,7 @@ def run(args: argparse.Namespace) -> int:
     _write_csv(out / "table3.csv", header, rows)
     md = "# SARTCo results (paper Table 3 layout)\n\n"
     if not rows:
-        md += "No episodes of the paper's protocol (only feedback experiments: see repair.md).\n"
+        md += "No episodes of the paper's protocol (only feedback experiments or dialogue modes: see repair.md, dialogue.md).\n"
     for game in sorted({r["game"] for r in rows}):
         md += table3_markdown([r for r in rows if r["game"] == game], f"{game}",
                               ["board_type", "object_type", "task", "source"]) + "\n"
