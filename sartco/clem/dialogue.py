@@ -268,7 +268,8 @@ class DialogueScorer(DescribeScorer):
     def compute_episode_scores(self, interactions: dict) -> None:
         super().compute_episode_scores(interactions)
         settings = settings_of(self.experiment)
-        log = interactions.get(DIALOGUE_KEY) or {}
+        log = DialogueLog(**interactions[DIALOGUE_KEY]) if interactions.get(DIALOGUE_KEY) else \
+            DialogueLog(settings.mode, settings.questions, settings.corrections)
         builds = [BuildRecord.from_json(b) for b in interactions.get(ATTEMPTS_KEY) or []]
         played = bool(builds) and not interactions.get("Aborted", 0)
         nan = math.nan
@@ -277,9 +278,8 @@ class DialogueScorer(DescribeScorer):
             "ES@1": es[0] if played else nan, "ES@N": es[-1] if played else nan,
             "Cell F1@1": builds[0].f1 if played else nan, "Cell F1@N": builds[-1].f1 if played else nan,
             "First Success Round": es.index(1) if 1 in es else nan,
-            "Questions Asked": sum(1 for e in log.get("events", []) if e["kind"] == "question"),
-            "Corrections Sent": sum(1 for e in log.get("events", []) if e["kind"] == "correction"),
-            "Describer Words": log.get("describer_words", 0),
+            "Questions Asked": log.count("question"), "Corrections Sent": log.count("correction"),
+            "Describer Words": log.describer_words,
         }
         for k in range(settings.corrections + 1):
             values[round_score(k)] = es[min(k, len(es) - 1)] if played else nan
