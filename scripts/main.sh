@@ -4,7 +4,8 @@
 #   cobot_instruct  mock (gold code) on the template cells of Table 3 (generated dataset v1) and
 #                   on the human- and model-written cells (imported published data), plus the
 #                   val-split ablations that ship in in/instances.json; the feedback experiments
-#   cobot_describe  mock describer (template instructions) + mock builder (the rule-based follower)
+#   cobot_describe  mock describer (template instructions, answers, corrections) + mock builder (the
+#                   rule-based follower), in the modes oneshot, clarify, correct, clarify_correct
 # Settings (environment): RESULTS (results), MODEL (mock), SCORES (scores).
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -34,8 +34,8 @@ import re
 from dataclasses import asdict, dataclass, field
 from typing import Callable
 
-from sartco.follower import FollowError, emit
-from sartco.follower.correct import apply_correction, correction_steps, pieces, read_correction
+from sartco.follower import FollowError, emit, follow
+from sartco.follower.correct import apply_correction, correction_steps, pieces
 from sartco.instances.templates import render
 from sartco.scores.dialogue_table import DIALOGUE_SCORES, round_score
 from sartco.world.render import grid_explanation, grid_text
@@ -192,9 +192,6 @@ def rulebased_turn(view: BuilderView) -> tuple[str, str]:
             problem = problem or str(error)
     if view.correction is not None and view.built is not None:
         try:
-            removals, additions = read_correction(view.correction, view.rows, view.cols)
-            if not removals and not additions:
-                raise FollowError(f"no piece to remove or place in {view.correction.strip()!r:.160}")
             steps = apply_correction([p for _, p in pieces(view.built)], view.correction, view.rows, view.cols)
         except FollowError as error:
             if view.questions_left:
@@ -213,13 +210,12 @@ def rulebased_turn(view: BuilderView) -> tuple[str, str]:
 
 
 def _follow(text: str, view: BuilderView) -> str:
-    from sartco.follower import follow
     return follow(text, view.task, view.given_code, view.rows, view.cols)
 
 
 class DialogueBuilder(Builder):
     """The Builder of cobot_describe: as programmatic player (`mock` after its script,
-    `rulebased`) it answers by `turn(view)`: code (fenced) or a question."""
+    `rulebased`) it answers by rulebased_turn(view()): code (fenced) or a question."""
 
     def __init__(self, model, *, view: Callable[[], BuilderView], script=None):
         super().__init__(model, script=script)

@@ -21,7 +21,7 @@ import re
 
 from sartco.world.board import parse_key
 
-from .parse import Placement, placements
+from .parse import FollowError, Placement, placements
 
 Piece = tuple[int, Placement]  # (level, placement)
 _SENTENCE = re.compile(r"(?<=[.!?])\s+|\n+")
@@ -87,8 +87,10 @@ def read_correction(text: str, rows: int = 8, cols: int = 8) -> tuple[list[Place
 
 def apply_correction(steps: list[Placement], text: str, rows: int = 8, cols: int = 8) -> list[Placement]:
     """The puts after a correction: each removal takes away the last put of that piece, the
-    additions follow in their order."""
+    additions follow in their order. FollowError when the correction names no piece at all."""
     removals, additions = read_correction(text, rows, cols)
+    if not removals and not additions:
+        raise FollowError(f"no piece to remove or place in {text.strip()!r:.160}")
     out = list(steps)
     for p in removals:
         for i in range(len(out) - 1, -1, -1):

@@ -320,3 +320,13 @@ def test_mock_corrections_repair_faulty_builds_on_every_test_board():
     failed = [i for i, ((target, _), ex) in enumerate(zip(faulty, results)) if not (ex.ok and ex.cells == target)]
     assert failed == [] and len(results) == 4 * 390
     assert correction_text(targets[0], targets[0]) == ""
+
+
+def test_rule_based_builder_reads_corrections():
+    from sartco.follower import FollowError, Placement
+    steps = [Placement("washer", "red", 7, 3), Placement("nut", "blue", 7, 3)]
+    text = "Remove the blue nut in the 8th row, 4th column. Place a green screw in the 8th row, 4th column."
+    assert apply_correction(steps, text) == [steps[0], Placement("screw", "green", 7, 3)]
+    for unreadable in ("That looks wrong.", "Place a nut in the 1st row, 1st column."):  # nothing / no colour
+        with pytest.raises(FollowError):
+            apply_correction(steps, unreadable)
