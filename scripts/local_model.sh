@@ -8,12 +8,14 @@
 #
 # Settings (environment): PORT (8765), EPISODES per experiment (3), DESCRIBE_EPISODES per
 # cobot_describe experiment (2; 12 experiments, a dialogue takes up to 8 model calls),
-# OUT (results-local), MAX_TOKENS (512, as the README recommends).
+# OUT (results-local), MAX_TOKENS (512, as the README recommends), GAMES (both:
+# "cobot_instruct cobot_describe").
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 PORT="${PORT:-8765}"
 EPISODES="${EPISODES:-3}"
 DESCRIBE_EPISODES="${DESCRIBE_EPISODES:-2}"
+GAMES="${GAMES:-cobot_instruct cobot_describe}"
 OUT="$(cd "$ROOT" && mkdir -p "${OUT:-results-local}" && cd "${OUT:-results-local}" && pwd)"
 MAX_TOKENS="${MAX_TOKENS:-512}"
 MODEL_NAME="gemma3-270m-local"
@@ -66,9 +68,10 @@ python "$ROOT/scripts/slice_instances.py" "$ROOT/games/cobot_describe/in/instanc
 
 cd "$WORK"   # clemcore reads key.json and model_registry.json from here; games from CLEMBENCH_HOME
 export CLEMBENCH_HOME="$ROOT"
-echo "== playing cobot_instruct ($EPISODES episodes per experiment) and cobot_describe ($DESCRIBE_EPISODES per experiment and mode)"
-clem run -g cobot_instruct -m "$MODEL_NAME" -i instances_local -r "$OUT" -l "$MAX_TOKENS"
-clem run -g cobot_describe -m "$MODEL_NAME" -i instances_local -r "$OUT" -l "$MAX_TOKENS"
+echo "== playing $GAMES (cobot_instruct: $EPISODES episodes per experiment, cobot_describe: $DESCRIBE_EPISODES per experiment and mode)"
+for game in $GAMES; do
+  clem run -g "$game" -m "$MODEL_NAME" -i instances_local -r "$OUT" -l "$MAX_TOKENS"
+done
 clem score -r "$OUT"
 clem transcribe -r "$OUT"
 clem eval -r "$OUT"
