@@ -9,13 +9,16 @@
 # Settings (environment): PORT (8765), EPISODES per experiment (3), DESCRIBE_EPISODES per
 # cobot_describe experiment (2; 12 experiments, a dialogue takes up to 8 model calls),
 # OUT (results-local), MAX_TOKENS (512, as the README recommends), GAMES (both:
-# "cobot_instruct cobot_describe").
+# "cobot_instruct cobot_describe"), DESCRIBE_MODELS (the local model in both roles; "mock LOCAL"
+# pairs the mock describer, whose answers and corrections come from the target, with the local
+# model as builder: LOCAL stands for the local model's name).
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 PORT="${PORT:-8765}"
 EPISODES="${EPISODES:-3}"
 DESCRIBE_EPISODES="${DESCRIBE_EPISODES:-2}"
 GAMES="${GAMES:-cobot_instruct cobot_describe}"
+DESCRIBE_MODELS="${DESCRIBE_MODELS:-LOCAL}"
 OUT="$(cd "$ROOT" && mkdir -p "${OUT:-results-local}" && cd "${OUT:-results-local}" && pwd)"
 MAX_TOKENS="${MAX_TOKENS:-512}"
 MODEL_NAME="gemma3-270m-local"
@@ -70,7 +73,10 @@ cd "$WORK"   # clemcore reads key.json and model_registry.json from here; games 
 export CLEMBENCH_HOME="$ROOT"
 echo "== playing $GAMES (cobot_instruct: $EPISODES episodes per experiment, cobot_describe: $DESCRIBE_EPISODES per experiment and mode)"
 for game in $GAMES; do
-  clem run -g "$game" -m "$MODEL_NAME" -i instances_local -r "$OUT" -l "$MAX_TOKENS"
+  models="$MODEL_NAME"
+  [ "$game" = cobot_describe ] && models="${DESCRIBE_MODELS//LOCAL/$MODEL_NAME}"
+  # shellcheck disable=SC2086  # one or two model names
+  clem run -g "$game" -m $models -i instances_local -r "$OUT" -l "$MAX_TOKENS"
 done
 clem score -r "$OUT"
 clem transcribe -r "$OUT"
