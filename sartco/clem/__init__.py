@@ -19,4 +19,6 @@ live inside a game folder). Reuse these from any game whose player writes code:
 - batching.OpenAIBatchingBackend       `openai_batching`: concurrent requests to an OpenAI-compatible server
 - stub_server.StubServer, benchrun     a local stub model server; `sartco bench-run`
 - training.gym_env                     clemcore's gym env on the train split, ES / cell F1 rewards
+- describer / dialogue                 cobot_describe's Describer, its dialogue modes (questions,
+                                       corrections) and their scorer
 """

@@ -6,10 +6,9 @@ Who answers:
 - `mock`/`programmatic`: the episode's gold code, one turn at a time, as a fenced block (or, if
   the instance carries a `script`, those raw answers verbatim: scripted episodes for tests; the
   paper protocol's episodes pass their `mock_answers`, the gold in the authors' label format);
-- `rulebased` (model registry entry, see sartco.clem.rulebased): the rule-based follower;
-  a game whose instructions come from another player (cobot_describe) passes
-  `mock_follows=True`, so that `mock` is the rule-based follower too (there is no gold answer
-  for instructions written during the game);
+- `rulebased` (model registry entry, see sartco.clem.rulebased): the rule-based follower
+  (cobot_describe's builder, sartco.clem.dialogue.DialogueBuilder, makes `mock` the rule-based
+  follower too: there is no gold answer for instructions written during the game);
 - `human`: the terminal; type the code, end with a line holding only "." (or end of input).
 """
 from __future__ import annotations
@@ -29,26 +28,22 @@ def fenced(code: str) -> str:
 class Builder(Player):
     def __init__(self, model, *, gold_turns: Sequence[str] = (),
                  rulebased: Callable[[int, dict], str] | None = None, script: Sequence[str] | None = None,
-                 name: str | None = None, mock_follows: bool = False):
+                 name: str | None = None):
         """gold_turns: the gold code of each turn (what `mock` answers);
         rulebased: turn index, context -> code (what the `rulebased` model answers);
-        script: raw answers that `mock` gives instead of the gold code (scripted episodes);
-        mock_follows: `mock` answers like `rulebased` (script still first), never with gold code."""
+        script: raw answers that `mock` gives instead of the gold code (scripted episodes)."""
         super().__init__(model, name=name, game_role="Builder")
         self.gold_turns = list(gold_turns)
         self.rulebased = rulebased
         self.script = list(script) if script else None
-        self.mock_follows = mock_follows
         self.turn = 0  # answers given so far
 
     def _custom_response(self, context: dict) -> str:
         turn = self.turn
         self.turn += 1
-        is_rulebased = self.model.name == RULEBASED
-        if is_rulebased or (self.mock_follows and self.script is None):  # the script comes first for `mock`
+        if self.model.name == RULEBASED:
             if self.rulebased is None:
-                raise RuntimeError("this game has no rule-based builder" if is_rulebased
-                                   else "mock_follows needs a rule-based builder")
+                raise RuntimeError("this game has no rule-based builder")
             return fenced(self.rulebased(turn, context))
         if self.script is not None:
             return self.script[min(turn, len(self.script) - 1)]

@@ -141,7 +141,7 @@ def log_build(game_master, record: BuildRecord, *, final: bool = True, attempt: 
     the executed program as code, and the picture of target and built board, which `clem score`
     writes as ATTEMPT_PICTURE beside interactions.json, sartco.clem.pictures) and, for the final
     build, the record under BUILD_KEY for the scorer."""
-    program = code_block(record.program) if record.program else text_block("(nothing: no code found)")
+    program = code_block(record.program) if record.program else text_block("(none: nothing was built)")
     content = "\n\n".join([text_block(record.summary()), text_block("executed program:"), program,
                             picture(ATTEMPT_PICTURE.format(attempt), PICTURE_ALT)])
     game_master.log_event("GM", "GM", {"type": BOARD_EVENT, "content": content,

@@ -14,7 +14,7 @@ instructions a builder then follows (the paper's model-written instructions).
 from __future__ import annotations
 
 import re
-from typing import Sequence
+from typing import Callable, Sequence
 
 from clemcore.clemgame import Player
 
@@ -34,12 +34,34 @@ def fill_builder_prompt(prompt: str, instruction: str) -> str:
     head, _, tail = prompt.rpartition(INSTRUCTION_SLOT)
     return f"{head}{instruction}{tail}"
 
-# "Instruction:", "**Instructions:**", "### Instruction:" (the rest of the line may hold text)
-_LABEL = re.compile(r"^\s*(?:#+\s*)?(?:\*\*|__)?\s*instructions?\s*(?:\*\*|__)?\s*:\s*(?:\*\*|__)?\s*(?P<rest>.*)$",
-                    re.IGNORECASE)
-# what ends the instruction: another answer label or a code fence (a model going on with a program)
-_END = re.compile(r"^\s*(?:#+\s*)?(?:\*\*|__)?\s*(?:output|function|usage|code|answer)\s*(?:\*\*|__)?\s*:|^\s*(?:`{3,}|~{3,})",
-                  re.IGNORECASE)
+def label(words: str) -> re.Pattern:
+    """A line that opens with one of these labels: "Instruction:", "**Instructions:**",
+    "### Question:" (words: a regex alternative, e.g. r"instructions?"); group `rest` holds the
+    rest of the line."""
+    return re.compile(rf"^\s*(?:#+\s*)?(?:\*\*|__)?\s*(?:{words})\s*(?:\*\*|__)?\s*:\s*(?:\*\*|__)?\s*(?P<rest>.*)$",
+                      re.IGNORECASE)
+
+
+_LABEL = label(r"instructions?")
+# what ends a labelled text: another answer label or a code fence (a model going on with a program)
+_END = re.compile(r"^\s*(?:#+\s*)?(?:\*\*|__)?\s*(?:output|function|usage|code|answer|question|correction)\s*(?:\*\*|__)?\s*:"
+                  r"|^\s*(?:`{3,}|~{3,})", re.IGNORECASE)
+
+
+def text_under(text: str | None, pattern: re.Pattern) -> str | None:
+    """The text after the first line that matches `pattern` (a `label`), up to another answer
+    label or a code fence, blank lines squeezed; None when no line matches; "" when nothing follows."""
+    lines = str(text or "").replace("\r\n", "\n").replace("\r", "\n").split("\n")
+    start = next((i for i, line in enumerate(lines) if pattern.match(line)), None)
+    if start is None:
+        return None
+    body = [pattern.match(lines[start]).group("rest")]
+    for line in lines[start + 1:]:
+        if _END.match(line):
+            break
+        body.append(line)
+    kept = [line.rstrip() for line in body]
+    return re.sub(r"\n{3,}", "\n\n", "\n".join(kept)).strip().strip("*_").strip()
 
 
 def parse_instruction(text: str) -> str:
@@ -48,20 +70,13 @@ def parse_instruction(text: str) -> str:
     ParseError when there is no label or nothing after it. Junk after the label is passed on:
     the builder has to cope with it, as with any bad instruction."""
     if text is None or not str(text).strip():
-        raise ParseError("the describer gave an empty answer", response=text)
-    lines = str(text).replace("\r\n", "\n").replace("\r", "\n").split("\n")
-    start = next((i for i, line in enumerate(lines) if _LABEL.match(line)), None)
-    if start is None:
-        raise ParseError("the describer's answer has no 'Instruction:' label", response=text)
-    body = [_LABEL.match(lines[start]).group("rest")]
-    for line in lines[start + 1:]:
-        if _END.match(line):
-            break
-        body.append(line)
-    kept = [line.rstrip() for line in body]
-    instruction = re.sub(r"\n{3,}", "\n\n", "\n".join(kept)).strip().strip("*_").strip()
+        raise ParseError("no instruction found: the describer gave an empty answer", response=text)
+    instruction = text_under(text, _LABEL)
+    if instruction is None:
+        raise ParseError("no instruction found: the describer's answer has no 'Instruction:' label", response=text)
     if not instruction:
-        raise ParseError("the describer's 'Instruction:' label is followed by nothing", response=text)
+        raise ParseError("no instruction found: the describer's 'Instruction:' label is followed by nothing",
+                         response=text)
     return instruction
 
 
@@ -80,21 +95,32 @@ def log_instruction(game_master, text: str | None, combo_name: str, error: str |
 
 
 class Describer(Player):
-    def __init__(self, model, *, template: str, script: Sequence[str] | None = None, name: str | None = None):
-        """template: the episode's template instruction (what `mock` and `rulebased` write);
-        script: raw answers that `mock` gives instead (scripted episodes for tests)."""
+    def __init__(self, model, *, template: str, script: Sequence[str] | None = None,
+                 reply: Callable[[], str] | None = None, name: str | None = None):
+        """template: the episode's template instruction (what `mock` and `rulebased` write first);
+        script: raw answers that `mock` gives first, one per turn (scripted episodes for tests);
+        reply: what `mock` and `rulebased` answer after the instruction (cobot_describe's
+        dialogue: answers to questions, reviews of a build)."""
         super().__init__(model, name=name, game_role="Describer")
         self.template = template
         self.script = list(script) if script else None
+        self.reply = reply
+        self.turn = 0  # answers given so far
 
     def _custom_response(self, context: dict) -> str:
-        if self.script is not None:
-            return self.script[0]
-        return f"Instruction: {self.template}"
+        turn = self.turn
+        self.turn += 1
+        if self.script is not None and turn < len(self.script):
+            return self.script[turn]
+        if turn == 0 or self.reply is None:
+            return f"Instruction: {self.template}"
+        return self.reply()
 
     def _terminal_response(self, context: dict) -> str:
-        text = terminal_answer(context, "your instructions as Describer")
-        return text if _LABEL.match(text.split("\n", 1)[0]) else f"Instruction: {text}"
+        first = self.turn == 0
+        self.turn += 1
+        text = terminal_answer(context, "your instructions as Describer" if first else "your answer as Describer")
+        return text if not first or _LABEL.match(text.split("\n", 1)[0]) else f"Instruction: {text}"
 
 
 class DescribeScorer(BuildScorer):

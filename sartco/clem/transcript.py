@@ -8,8 +8,8 @@ together into one paragraph. So our game masters (the `MarkdownTranscript` mixin
 log every message in `display` form: fenced code as a code block, everything else as
 preformatted text that keeps its line breaks and indentation and wraps long lines; all text is
 HTML-escaped (model output is hostile input: no markup of a model reaches the reader's browser).
-The exact texts stay in the players' requests files (player_N.requests.json); the models never
-see the display form. Board pictures are `<img>` tags with paths relative to the episode folder
+The exact texts stay in each message action under `text` and in the players' requests files
+(player_N.requests.json); the models never see the display form. Board pictures are `<img>` tags with paths relative to the episode folder
 (`picture`), so a copied results folder still shows them.
 """
 from __future__ import annotations
@@ -18,6 +18,7 @@ import html
 import re
 
 MARKDOWN_KEY = "markdown"  # the interactions.json key that switches clemcore's transcript to Markdown
+RAW_KEY = "text"           # a message action's exact text (its `content` is the display form)
 FENCE = re.compile(r"^[ \t]*```[^\n]*\n(.*?)^[ \t]*```[ \t]*$", re.M | re.S)  # a closed fenced block
 TEXT_STYLE = "white-space: pre-wrap; margin: 0"
 CODE_STYLE = ("white-space: pre; overflow-x: auto; margin: 4px 0; padding: 6px; background: #f6f8fa; "
@@ -58,12 +59,19 @@ def display(text: str) -> str:
 
 class MarkdownTranscript:
     """Mixin for a DialogueGameMaster (put it first among the bases): the transcript shows every
-    message of the game in `display` form. clemcore's `step` logs each exchange through these two
-    methods; what the players receive and answer is unchanged."""
+    message of the game in `display` form (the action's `content`, what clemcore renders), and the
+    action keeps the exact text under `text` (RAW_KEY) for anyone who reads interactions.json.
+    clemcore's `step` logs each exchange through these two methods (the same actions as clemcore's
+    own, plus `text`); what the players receive and answer is unchanged."""
 
     def log_gm_to_player(self, context, player):
         self.log_key(MARKDOWN_KEY, True)  # before the first message; the same value every time
-        super().log_gm_to_player(dict(context, content=display(context["content"])), player)
+        action = {"type": "send message", "content": display(context["content"]), "label": "context",
+                  RAW_KEY: context["content"]}
+        if "image" in context:
+            action["image"] = context["image"]
+        self.log_event(from_="GM", to=player.name, action=action)
 
     def log_player_to_gm(self, response, player):
-        super().log_player_to_gm(display(response), player)
+        self.log_event(from_=player.name, to="GM", action={"type": "get message", "content": display(response),
+                                                           "label": "response", RAW_KEY: response})

@@ -12,6 +12,9 @@ to the template instructions; the record keeps its id, so the base dataset's tra
 in the manifest under config.base) still serves the in-context examples. Files:
 `<board_type>_<object_type>_<split>.json` and manifest.json ({"source": "describer", ...}).
 
+Only the `oneshot` experiments count (an experiment without a `mode` field is one): in the
+dialogue modes the describer's first instruction comes from the same prompt, and what follows it
+(answers, corrections) is not an instruction of the paper's kind.
 Episodes without an instruction (the describer's answer had no "Instruction:"), unreadable
 episodes and repeated (model, board) pairs are left out and listed in the manifest's defects.
 """
@@ -68,6 +71,8 @@ def collect(results: Path) -> tuple[dict[str, dict], list[dict], dict]:
         except ValueError as exc:
             defects.append(_defect("unreadable", episode, results, str(exc)))
             continue
+        if (experiment.get("mode") or "oneshot") != "oneshot":
+            continue  # the dialogue modes: the same first instruction again, then answers and corrections
         if not isinstance(instance, dict) or not isinstance(instance.get("record"), dict):
             defects.append(_defect("no_record", episode, results, "instance.json missing or without the board record"))
             continue

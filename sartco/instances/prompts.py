@@ -130,7 +130,7 @@ def builder_turn(record: dict, step: int, source: str = "template") -> str:
 
 def describer_prompt(record: dict) -> str:
     cells = record["target"]
-    return render("prompts/describer.j2", system=render("prompts/system.j2"),
+    return render("prompts/describer.j2",
                   environment=_environment(record["rows"], record["cols"]), name=record["combo_name"],
                   grid=grid_text(cells, record["rows"], record["cols"]),
                   explanation=grid_explanation(cells),

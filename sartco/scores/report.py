@@ -12,9 +12,11 @@ as Markdown and CSV:
   repair.md / repair.csv      feedback experiments (experiment field `attempts` N > 1), per model
                               and experiment: ES@1, ES@N, the share of first-attempt failures
                               repaired, mean attempts used (only when there are such episodes)
+  dialogue.md / .csv / dialogue_rounds.svg   cobot_describe's dialogue scores (sartco.scores.dialogue_table)
 Numbers are percentages over all episodes of a cell; an aborted episode (no code found) counts
 as 0 for EM, CB and ES, and is listed as parse_error in the error tables. Feedback experiments
-are kept out of table3 and the ablations (they are not the paper's protocol).
+and cobot_describe's dialogue modes are kept out of table3 and the ablations (they are not the
+paper's protocol).
 """
 from __future__ import annotations
 
@@ -36,6 +38,8 @@ from sartco.world import ErrorCode
 # model-written instructions beside the template ones, as in the paper); every other game name
 # (cobot_instruct_ablations, _feedback, ...) is reported under its own name
 TABLE3_GAME = {"cobot_instruct_published": "cobot_instruct"}
+from . import dialogue_table
+
 TASK_NAMES = {"first_order": "first-order (multi-turn)", "sequence_function": "function from puts",
               "optimal_function": "optimal function", "repetition": "repetition"}
 
@@ -93,7 +97,7 @@ def collect(results: Path, games: list[str] | None = None) -> list[dict]:
             "em": _num(scores.get("Exact Match")), "cb": _num(scores.get("CodeBLEU")),
             "es": _num(scores.get("Execution Success")), "f1": _num(scores.get("Cell F1")),
             "category": scores.get("Error Category") or (str(ErrorCode.PARSE_ERROR) if scores.get("Aborted") else "unknown"),
-            "max_attempts": attempts, "feedback_of": exp.get("feedback_of", ""),
+            "max_attempts": attempts, "feedback_of": exp.get("feedback_of", ""), "mode": exp.get("mode") or "oneshot",
             "es1": _num(scores.get("ES@1", scores.get("Execution Success"))),
             "attempts_used": _num(scores.get("Attempts")),
             "experiment_fields": exp, "scores": scores, "player_models": data.get("player_models"),
@@ -129,7 +133,7 @@ def table3(episodes: list[dict]) -> tuple[list[str], list[dict]]:
     """Long rows (one per cell and model) of the paper's Table 3."""
     groups: dict[tuple, list] = defaultdict(list)
     for e in episodes:
-        if e["ablation"] or e["max_attempts"] > 1:
+        if e["ablation"] or e["max_attempts"] > 1 or e["mode"] != "oneshot":  # dialogue modes: dialogue.md
             continue
         game = TABLE3_GAME.get(e["game"], e["game"])
         groups[(game, e["board_type"], e["object_type"], e["task"], e["source"], e["split"], e["model"])].append(e)
@@ -245,7 +249,7 @@ def run(args: argparse.Namespace) -> int:
     _write_csv(out / "table3.csv", header, rows)
     md = "# SARTCo results (paper Table 3 layout)\n\n"
     if not rows:
-        md += "No episodes of the paper's protocol (only feedback experiments: see repair.md).\n"
+        md += "No episodes of the paper's protocol (only feedback experiments or dialogue modes: see repair.md, dialogue.md).\n"
     for game in sorted({r["game"] for r in rows}):
         md += table3_markdown([r for r in rows if r["game"] == game], f"{game}",
                               ["board_type", "object_type", "task", "source"]) + "\n"
@@ -274,6 +278,7 @@ def run(args: argparse.Namespace) -> int:
                    "repaired share", "mean attempts"], [[r[h] for h in header] for r in rows])
         (out / "repair.md").write_text(md, encoding="utf-8")
         written += ["repair.md", "repair.csv"]
+    written += dialogue_table.write(args.results, out, args.game)  # cobot_describe's dialogue modes
     header, rows = errors(episodes)
     _write_csv(out / "errors.csv", header, rows)
     md = "# Error categories (episodes per category)\n\n" + _md(header, [[r[h] for h in header] for r in rows])

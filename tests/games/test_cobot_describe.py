@@ -85,7 +85,7 @@ def describe_run(tmp_path_factory):
 
 
 def test_mock_builds_every_board(describe_run):
-    names = [e["name"] for e in json.loads(SLICE.read_text())["experiments"]]
+    names = [e["name"] for e in json.loads(SLICE.read_text())["experiments"] if "mode" not in e]  # oneshot
     assert names == ["simple_boards", "regular_boards_simple_objects", "regular_boards_complex_objects"]
     for name in names:
         played = episodes(describe_run, name)
@@ -99,6 +99,13 @@ def test_mock_builds_every_board(describe_run):
             # players: the describer's and builder's roles are both recorded
             roles = {p["game_role"] for p in e["interactions"]["players"].values()}
             assert {"Describer", "Builder"} <= roles
+
+
+def test_describer_prompt_asks_for_instructions_not_code():
+    prompt = json.loads(SLICE.read_text())["experiments"][0]["game_instances"][0]["describer_prompt"]
+    first = prompt.split("\n", 1)[0]
+    assert first.startswith("You are a helpful assistant that writes instructions for a programmer")
+    assert "writes Python code" not in first
 
 
 def test_builder_sees_instruction_not_target(describe_run):
@@ -123,6 +130,11 @@ def test_scripted_describer_answers(describe_run, name):
         assert s["Main Score"] is None or math.isnan(s["Main Score"])
         assert s["Describer Answered"] == 0
         assert "Describer" in e["interactions"]["sartco_build"]["message"]
+        # the transcript says what happened: no instruction, nothing built (not "no code found")
+        board = [ev["action"]["content"] for t in e["interactions"]["turns"] for ev in t
+                 if ev["action"]["type"] == "board"]
+        assert len(board) == 1 and "Describer: no instruction found" in board[0]
+        assert "(none: nothing was built)" in board[0] and "no code found" not in board[0]
     else:
         assert s["Main Score"] == 0.0 and s["Describer Answered"] == 1
     if name == "junk":

@@ -63,9 +63,9 @@ def test_mock_answers_the_authors_gold_es_1_em_0_on_functions(paper_episodes, pl
         assert len(paper_turns(result)) == n
         assert [result["scores"]["round scores"][str(k)]["Paper ES"] for k in range(n)] == [1] * n
         # every turn is the authors' user message, verbatim, and nothing else is sent
-        sent = [e["action"]["content"] for t in result["interactions"]["turns"] for e in t
-                if e["action"]["type"] == "send message"]
-        assert sent == [display(m) for m in ep["messages"]]  # logged in display form (sartco.clem.transcript)
+        sent = [e["action"] for t in result["interactions"]["turns"] for e in t if e["action"]["type"] == "send message"]
+        assert [a["text"] for a in sent] == ep["messages"]
+        assert [a["content"] for a in sent] == [display(m) for m in ep["messages"]]  # what transcripts show
         events = [e for t in result["interactions"]["turns"] for e in t if e["action"]["type"] == "paper_turn"]
         assert len(events) == n and events[0]["action"]["scores"]["reading"]
 

@@ -1,0 +1,172 @@
+"""The dialogue table of cobot_describe (`sartco report`): per model pair and experiment, what the
+clarification questions and the corrections did, and ES after round k as a small SVG plot.
+
+Score names (scores.json, written by sartco.clem.dialogue.DialogueScorer):
+  ES@1, Cell F1@1      after the first build          ES@N, Cell F1@N   after the last build
+  ES Round k           the board standing after k corrections (k = 0..R; the last board carries on)
+  First Success Round  0 = the first build, k = after the k-th correction (NaN: never)
+  Questions Asked, Corrections Sent, Describer Words   (instruction, answers and corrections)
+
+write(results, out, games) writes dialogue.md, dialogue.csv and dialogue_rounds.svg (nothing when
+the results hold no dialogue scores) and returns the names written. Percentages are over all
+episodes of a row, an aborted episode counting 0, as in the other tables; the means of the
+counts are over the played episodes, the first success round over the episodes that succeeded.
+"""
+from __future__ import annotations
+
+import math
+from collections import defaultdict
+from pathlib import Path
+
+DIALOGUE_SCORES = ("ES@1", "ES@N", "Cell F1@1", "Cell F1@N", "First Success Round", "Questions Asked",
+                   "Corrections Sent", "Describer Words")
+ROUND_PREFIX = "ES Round "
+HEADER = ["model", "game", "experiment", "mode", "questions", "corrections", "episodes", "played", "es_at_1",
+          "es_at_n", "f1_at_1", "f1_at_n", "first_success_round", "questions_asked", "corrections_sent",
+          "describer_words"]
+MODE_ORDER = ("oneshot", "clarify", "correct", "clarify_correct")
+COLOURS = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf")
+
+
+def round_score(k: int) -> str:
+    return f"{ROUND_PREFIX}{k}"
+
+
+def _num(value) -> float | None:
+    if value is None or isinstance(value, str):
+        return None
+    value = float(value)
+    return None if math.isnan(value) else value
+
+
+def _mean(values, *, pct: bool = False, zero: bool = False) -> float:
+    """Mean (x 100 when pct); missing values count 0 when zero, else are left out."""
+    values = [0.0 if v is None else v for v in values] if zero else [v for v in values if v is not None]
+    if not values:
+        return float("nan")
+    return round((100.0 if pct else 1.0) * sum(values) / len(values), 2)
+
+
+def collect(results: Path, games: list[str] | None = None) -> list[dict]:
+    """One row per scored episode that has dialogue scores."""
+    from .report import _load
+    experiments: dict[Path, dict] = {}
+    episodes = []
+    for path in sorted(results.rglob("scores.json")):
+        scores = _load(path).get("episode scores", {})
+        if round_score(0) not in scores:
+            continue
+        exp_dir = path.parent.parent
+        if exp_dir not in experiments:
+            exp_file = exp_dir / "experiment.json"
+            experiments[exp_dir] = _load(exp_file) if exp_file.is_file() else {}
+        exp = experiments[exp_dir]
+        game = exp.get("game_name") or exp_dir.parent.name
+        if games and game not in games:
+            continue
+        rounds = sorted(int(k[len(ROUND_PREFIX):]) for k in scores if k.startswith(ROUND_PREFIX))
+        episodes.append({"model": exp_dir.parent.parent.name, "game": game, "experiment": exp.get("name", exp_dir.name),
+                         "mode": exp.get("mode") or "oneshot", "questions": exp.get("questions", 0) or 0,
+                         "corrections": exp.get("corrections", 0) or 0, "aborted": int(scores.get("Aborted", 0) or 0),
+                         "rounds": [_num(scores[round_score(k)]) for k in rounds],
+                         **{name: _num(scores.get(name)) for name in DIALOGUE_SCORES}})
+    return episodes
+
+
+def rows_of(episodes: list[dict]) -> list[dict]:
+    groups: dict[tuple, list] = defaultdict(list)
+    for e in episodes:
+        groups[(e["model"], e["game"], e["experiment"])].append(e)
+    rows = []
+    for (model, game, experiment), group in sorted(groups.items(), key=lambda kv: (
+            kv[0][0], kv[0][1], MODE_ORDER.index(kv[1][0]["mode"]) if kv[1][0]["mode"] in MODE_ORDER else 99, kv[0][2])):
+        first = group[0]
+        played = [e for e in group if not e["aborted"]]
+        rows.append({
+            "model": model, "game": game, "experiment": experiment, "mode": first["mode"],
+            "questions": first["questions"] if "clarify" in first["mode"] else 0,
+            "corrections": first["corrections"] if "correct" in first["mode"] else 0,
+            "episodes": len(group), "played": _mean([1.0 - e["aborted"] for e in group], pct=True),
+            "es_at_1": _mean([e["ES@1"] for e in group], pct=True, zero=True),
+            "es_at_n": _mean([e["ES@N"] for e in group], pct=True, zero=True),
+            "f1_at_1": _mean([e["Cell F1@1"] for e in group], pct=True, zero=True),
+            "f1_at_n": _mean([e["Cell F1@N"] for e in group], pct=True, zero=True),
+            "first_success_round": _mean([e["First Success Round"] for e in group]),
+            "questions_asked": _mean([e["Questions Asked"] for e in played]),
+            "corrections_sent": _mean([e["Corrections Sent"] for e in played]),
+            "describer_words": _mean([e["Describer Words"] for e in played]),
+        })
+    return rows
+
+
+def curves(episodes: list[dict]) -> dict[tuple[str, str], list[float]]:
+    """(model pair, mode) -> mean ES (%, aborted = 0) after round k, over all its experiments."""
+    groups: dict[tuple, list] = defaultdict(list)
+    for e in episodes:
+        groups[(e["model"], e["mode"])].append(e)
+    out = {}
+    for key in sorted(groups, key=lambda k: (k[0], MODE_ORDER.index(k[1]) if k[1] in MODE_ORDER else 99, k[1])):
+        group = groups[key]
+        n = max(len(e["rounds"]) for e in group)
+        out[key] = [_mean([e["rounds"][min(k, len(e["rounds"]) - 1)] for e in group], pct=True, zero=True)
+                    for k in range(n)]
+    return out
+
+
+def svg(series: dict[tuple[str, str], list[float]], width: int = 460, height: int = 260) -> str:
+    """A small line plot: ES (%) after round k, one line (or point) per model pair and mode."""
+    left, right, top, bottom = 44, 170, 16, 36
+    rounds = max((len(v) for v in series.values()), default=1)
+    span = max(rounds - 1, 1)
+    def x(k): return left + (width - left - right) * k / span
+    def y(v): return top + (height - top - bottom) * (1 - v / 100.0)
+    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
+           f'font-family="sans-serif" font-size="11">', f'<rect width="{width}" height="{height}" fill="white"/>']
+    for v in range(0, 101, 25):
+        out.append(f'<line x1="{left}" y1="{y(v):.1f}" x2="{x(span):.1f}" y2="{y(v):.1f}" stroke="#ddd"/>')
+        out.append(f'<text x="{left - 6}" y="{y(v) + 4:.1f}" text-anchor="end">{v}</text>')
+    for k in range(rounds):
+        out.append(f'<text x="{x(k):.1f}" y="{height - bottom + 16}" text-anchor="middle">{k}</text>')
+    out.append(f'<text x="{(left + x(span)) / 2:.1f}" y="{height - 4}" text-anchor="middle">'
+               f'round (corrections sent before the build)</text>')
+    out.append(f'<text x="12" y="{(top + height - bottom) / 2:.1f}" text-anchor="middle" '
+               f'transform="rotate(-90 12 {(top + height - bottom) / 2:.1f})">ES (%)</text>')
+    for i, ((model, mode), values) in enumerate(series.items()):
+        colour = COLOURS[i % len(COLOURS)]
+        points = " ".join(f"{x(k):.1f},{y(v):.1f}" for k, v in enumerate(values) if not math.isnan(v))
+        if len(values) > 1:
+            out.append(f'<polyline points="{points}" fill="none" stroke="{colour}" stroke-width="2"/>')
+        for k, v in enumerate(values):
+            if not math.isnan(v):
+                out.append(f'<circle cx="{x(k):.1f}" cy="{y(v):.1f}" r="3" fill="{colour}"><title>{model} {mode} '
+                           f'round {k}: {v:.1f}</title></circle>')
+        ly = top + 14 * i
+        out.append(f'<rect x="{width - right + 10}" y="{ly}" width="10" height="10" fill="{colour}"/>')
+        out.append(f'<text x="{width - right + 24}" y="{ly + 9}">{_escape(model)} {mode}</text>')
+    out.append("</svg>")
+    return "\n".join(out) + "\n"
+
+
+def _escape(text: str) -> str:
+    return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
+
+
+def write(results: Path, out: Path, games: list[str] | None = None) -> list[str]:
+    from .report import _md, _write_csv
+    episodes = collect(results, games)
+    if not episodes:
+        return []
+    rows = rows_of(episodes)
+    _write_csv(out / "dialogue.csv", HEADER, rows)
+    (out / "dialogue_rounds.svg").write_text(svg(curves(episodes)), encoding="utf-8")
+    md = ("# cobot_describe as a dialogue (clarification questions, corrections)\n\n"
+          "ES@1 / ES@N, F1@1 / F1@N = execution success and cell F1 (%) after the first / the last build "
+          "(aborted = 0); K / R = questions / corrections allowed; first success = mean round of the first "
+          "success over the episodes that succeeded (0 = the first build); questions, corrections and "
+          "describer words = means per played episode.\n\n"
+          "![ES after round k](dialogue_rounds.svg)\n\n")
+    md += _md(["model", "game", "experiment", "mode", "K", "R", "episodes", "played", "ES@1", "ES@N", "F1@1", "F1@N",
+               "first success", "questions", "corrections", "describer words"],
+              [[r[h] for h in HEADER] for r in rows])
+    (out / "dialogue.md").write_text(md, encoding="utf-8")
+    return ["dialogue.md", "dialogue.csv", "dialogue_rounds.svg"]
