@@ -38,12 +38,12 @@ run python games/cobot_instruct/instancegenerator.py --published instances/publi
 run python games/cobot_instruct/instancegenerator.py --protocol paper
 
 FIRST="${MODELS%% *}"
-GAMES=""
+PLAYED=()
 play() {  # play GAME MODEL [clem run options...]
   local game="$1" model="$2"; shift 2
   step "$game ($model)"
   run clem run -g "$game" -m "$model" -r "$RESULTS" "$@"
-  case " $GAMES " in *" $game "*) ;; *) GAMES="$GAMES $game" ;; esac
+  PLAYED+=("$game $model")
 }
 for MODEL in $MODELS; do
   play cobot_instruct "$MODEL"
@@ -57,11 +57,11 @@ play cobot_instruct_feedback "$FIRST"
 step "scoring, transcribing, evaluating"
 run clem score -r "$RESULTS"
 run clem transcribe -r "$RESULTS"
-# one game at a time: clem eval adds each game's episodes to raw.csv and recomputes the table;
-# clemcore builds a game's rows one by one (cost grows with the square of their number), so a
-# single eval over every game takes many times longer
+# one game and model at a time: clem eval adds their episodes to raw.csv and recomputes the table;
+# clemcore builds the rows of what it loads one by one (the cost grows with the square of their
+# number), so a single eval over everything takes many times longer (44 min instead of minutes)
 rm -f "$RESULTS/raw.csv"
-for game in $GAMES; do run clem eval -r "$RESULTS" -g "$game"; done
+for pair in "${PLAYED[@]}"; do set -- $pair; run clem eval -r "$RESULTS" -g "$1" -m "$2"; done
 run sartco report -r "$RESULTS" --out "$SCORES"
 
 step "results: $RESULTS/ (transcripts, results.csv, main.log), tables in $SCORES/"
