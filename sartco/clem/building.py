@@ -125,6 +125,20 @@ def parse_failure_for(instance: dict, message: str, turn_codes: list[str] | None
                          rows=instance["rows"], cols=instance["cols"])
 
 
+def build_answers(instance: dict, answers: list[str]) -> BuildRecord:
+    """Our build of a dialogue's answers: the code sartco.clem.parsing finds in each, joined and run
+    once; the first answer without code makes it a parse failure (nothing executed)."""
+    from .parsing import ParseError, parse_code
+
+    codes = []
+    for answer in answers:
+        try:
+            codes.append(parse_code(answer))
+        except ParseError as error:
+            return parse_failure_for(instance, error.reason or "no code found", turn_codes=codes)
+    return build_for(instance, "\n".join(codes), turn_codes=codes)
+
+
 def finish_build(game_master, record: BuildRecord, attempts: list[BuildRecord] | None = None) -> None:
     """The episode ends with `record`: log it as the final build, move the game state to the
     outcome of the attempts (every attempt in order, `record` the last; default: `record` alone)

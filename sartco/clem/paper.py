@@ -21,9 +21,8 @@ from sartco.scores.paper_table import PAPER_SCORES, generation, load_table3
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
 
 from .benchmark import EPISODE_FIELDS
-from .building import build_for, log_build, parse_failure_for
+from .building import build_answers, log_build
 from .outcomes import set_share_outcome
-from .parsing import ParseError, parse_code
 from .scoring import BuildScorer
 
 PAPER_KEY = "sartco_paper"     # interactions.json: {"em", "cb", "es", "turns": [...]}
@@ -66,15 +65,6 @@ def instance_fields(episode: dict) -> dict:
             "given_code": episode["given_function"], "gold_code": gold_code(episode)}
 
 
-def our_build(instance: dict, answers: list[str]):
-    """Our own build of the whole dialogue: the code our parser finds in each answer, joined."""
-    codes = []
-    for answer in answers:
-        try:
-            codes.append(parse_code(answer))
-        except ParseError as error:
-            return parse_failure_for(instance, error.reason or "no code found", turn_codes=codes)
-    return build_for(instance, "\n".join(codes), turn_codes=codes)
 
 
 def finish_paper(game_master, instance: dict, answers: list[str]) -> None:
@@ -94,7 +84,7 @@ def finish_paper(game_master, instance: dict, answers: list[str]) -> None:
         game_master.log_event("GM", "GM", {"type": PAPER_EVENT, "turn": k, "scores": entry,
                                            "content": f"paper protocol, turn {k + 1}: {verdict}{why}\n\n{shown}"})
     game_master.log_key(PAPER_KEY, {"em": score.em, "cb": score.cb, "es": score.es, "turns": turns})
-    log_build(game_master, our_build(instance, answers))
+    log_build(game_master, build_answers(instance, answers))
     set_share_outcome(game_master.state, score.es)
 
 

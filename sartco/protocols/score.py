@@ -84,24 +84,16 @@ def score_paper(episode: dict, responses: list[str]) -> dict:
 
 def score_ours(episode: dict, responses: list[str]) -> dict:
     """As cobot_instruct's master and BuildScorer do (one attempt)."""
-    from sartco.clem.building import build_for, parse_failure_for
-    from sartco.clem.parsing import ParseError, parse_code
+    from sartco.clem.building import build_answers
     from sartco.scores import code_bleu, exact_match
+    from sartco.world import ErrorCode
 
     instance = episode["instance"]
     turns = instance["turns"]
     if len(responses) > len(turns):
         raise LineError(f"{len(responses)} responses for {len(turns)} turn(s)")
-    codes, record = [], None
-    for answer in responses + [""] * (len(turns) - len(responses)):
-        try:
-            codes.append(parse_code(answer))
-        except ParseError as error:
-            record = parse_failure_for(instance, error.reason or "no code found", turn_codes=codes)
-            break
-    aborted = record is not None
-    if record is None:
-        record = build_for(instance, "\n".join(codes), turn_codes=codes)
+    record = build_answers(instance, responses + [""] * (len(turns) - len(responses)))
+    aborted = record.error == ErrorCode.PARSE_ERROR  # an answer without code: nothing was executed
     gold = instance["gold_code"]
     em = 0 if aborted else int(exact_match(record.builder_code, gold))
     cb = 0.0 if aborted else float(code_bleu(record.builder_code, gold))
