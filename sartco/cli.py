@@ -7,6 +7,8 @@ import argparse
 import importlib
 import sys
 
+from sartco.errors import UserError
+
 COMMANDS = {
     "execute": ("sartco.program.cli", "run programs from JSON lines on stdin in the sandbox"),
     "bench-execute": ("sartco.program.bench", "throughput of `sartco execute` against bare compile()"),
@@ -19,10 +21,6 @@ COMMANDS = {
     "score-responses": ("sartco.protocols.score", "score raw answers (JSON lines) in a protocol (paper or sartco)"),
     "bench-run": ("sartco.clem.benchrun", "clem run against a stub model server: sequential vs the batching backend"),
 }
-
-
-class UserError(Exception):
-    """A mistake in the user's input: printed as one line, no traceback, exit code 2."""
 
 
 def main(argv: list[str] | None = None) -> int:

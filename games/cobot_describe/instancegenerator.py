@@ -30,7 +30,7 @@ from pathlib import Path
 
 from clemcore.clemgame import GameInstanceGenerator
 
-from sartco.cli import UserError
+from sartco.errors import UserError
 from sartco.clem.describer import INSTRUCTION_SLOT
 from sartco.clem.dialogue import DEFAULT_CORRECTIONS, DEFAULT_QUESTIONS, MODES, clarify_note
 from sartco.clem.episodes import DESCRIBED_TASK, board_fields

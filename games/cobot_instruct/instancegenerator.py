@@ -62,7 +62,7 @@ from pathlib import Path
 
 from clemcore.clemgame import GameInstanceGenerator
 
-from sartco.cli import UserError
+from sartco.errors import UserError
 from sartco.clem.episodes import DESCRIBED_TASK, board_fields
 from sartco.instances.examples import MAX_EXAMPLES, select_examples
 from sartco.instances.generate import load_dataset

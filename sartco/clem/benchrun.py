@@ -28,7 +28,7 @@ import sys
 import time
 from pathlib import Path
 
-from sartco.cli import UserError
+from sartco.errors import UserError
 
 from .stub_server import StubServer, answer_table
 

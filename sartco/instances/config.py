@@ -9,7 +9,7 @@ from typing import Any
 
 import yaml
 
-from sartco.cli import UserError
+from sartco.errors import UserError
 from sartco.world import COLORS
 
 from .templates import resources_dir

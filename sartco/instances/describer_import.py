@@ -26,7 +26,7 @@ import json
 from collections import Counter, defaultdict
 from pathlib import Path
 
-from sartco.cli import UserError
+from sartco.errors import UserError
 
 from .generate import FORMAT, dumps
 

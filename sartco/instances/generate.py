@@ -23,7 +23,7 @@ from collections import defaultdict
 from pathlib import Path
 from typing import Any, Callable
 
-from sartco.cli import UserError
+from sartco.errors import UserError
 
 from .arrangements import anchors
 from .config import BOARD_TYPES, SPLITS, Config, load_config

@@ -46,7 +46,7 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any, Iterator
 
-from sartco.cli import UserError
+from sartco.errors import UserError
 from sartco.program import execute_many
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, LETTERS, Cells
 

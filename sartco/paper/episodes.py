@@ -43,7 +43,7 @@ from pathlib import Path
 from string import Template
 from typing import Any, Iterable
 
-from sartco.cli import UserError
+from sartco.errors import UserError
 from sartco.instances.generate import load_dataset
 from sartco.instances.prompts import instruction_text
 from sartco.program.gold import DEFAULT_DATA, base_of, samples

@@ -30,7 +30,7 @@ import os
 import time
 from pathlib import Path
 
-from sartco.cli import UserError
+from sartco.errors import UserError
 
 from .cli import serve
 from .gold import DEFAULT_DATA, gold_programs

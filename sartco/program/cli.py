@@ -14,7 +14,7 @@ import select
 import threading
 from collections import deque
 
-from sartco.cli import UserError
+from sartco.errors import UserError
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, ErrorCode
 from sartco.world.board import MAX_SIDE
 

@@ -34,7 +34,7 @@ import sys
 from pathlib import Path
 from typing import Iterable
 
-from sartco.cli import UserError
+from sartco.errors import UserError
 from sartco.paper.vocabulary import OUR_PROTOCOL, PROTOCOL, PROTOCOLS
 
 ROOT = Path(__file__).resolve().parents[2]

@@ -2,7 +2,7 @@
 (see sartco.protocols)."""
 from __future__ import annotations
 
-from sartco.cli import UserError
+from sartco.errors import UserError
 from sartco.paper.vocabulary import PROTOCOL
 
 from . import add_common, our_episodes, paper_episodes, write_lines

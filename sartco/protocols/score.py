@@ -13,7 +13,7 @@ import json
 import sys
 from pathlib import Path
 
-from sartco.cli import UserError
+from sartco.errors import UserError
 from sartco.paper.vocabulary import PROTOCOL, published_test_files
 
 from . import add_common, our_episodes, paper_episodes, write_lines

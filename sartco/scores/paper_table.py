@@ -19,7 +19,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from sartco.cli import UserError
+from sartco.errors import UserError
 from sartco.instances.importer import SOURCE_ORDER
 from sartco.paper import PROTOCOL
 from sartco.program.gold import DEFAULT_DATA

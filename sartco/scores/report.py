@@ -29,7 +29,7 @@ from collections import Counter, defaultdict
 from pathlib import Path
 
 from sartco.clem.feedback import max_attempts
-from sartco.cli import UserError
+from sartco.errors import UserError
 from sartco.instances.importer import SOURCE_ORDER
 from sartco.instances.prompts import TASKS as TASK_ORDER
 from sartco.world import ErrorCode

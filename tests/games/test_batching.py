@@ -128,6 +128,6 @@ def test_bench_run_batched_scores_equal_sequential(tmp_path):
 
 
 def test_bench_run_rejects_an_unknown_experiment(tmp_path):
-    from sartco.cli import UserError
+    from sartco.errors import UserError
     with pytest.raises(UserError, match="unknown cobot_instruct experiment"):
         benchrun.select_instances(["no_such_experiment"], 0)

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from sartco.cli import UserError
+from sartco.errors import UserError
 from sartco.paper import PROTOCOL
 from sartco.paper.episodes import build_episodes
 from sartco.paper.reading import read_answer

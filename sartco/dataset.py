@@ -1,0 +1,114 @@
+"""The dataset's nouns, in one place and free of dependencies (the bottom layer: it imports nothing
+from sartco, so every layer may use it).
+
+A board kind is a board type with an object type. Each kind has one spelling per use:
+
+    kind             board    object   key              prefix  experiment                      cell
+    SIMPLE           simple   simple   simple_simple    sb_so   simple_boards                   sb_so
+    REGULAR_SIMPLE   regular  simple   regular_simple   rb_so   regular_boards_simple_objects   rb_so
+    REGULAR_COMPLEX  regular  complex  regular_complex  rb_cho  regular_boards_complex_objects  rb_co
+
+key: our dataset's file names (`<key>_<split>.json`), config sections and record ids;
+prefix: the published SARTCo file names (`<prefix>_<split>[_<suffix>].json`);
+experiment: cobot_describe's experiment names; cell: cobot_instruct's experiment names (Table 3 rows).
+The published files call complex objects "challenge" (`published_object`).
+
+Instruction sources: template (generated), human (`_hc` files), codellama / gpt4 / claude (`_mg`,
+`_gpt4_mg`, `_claude_mg`: model-written). Tasks are the paper's code styles.
+"""
+from __future__ import annotations
+
+import re
+from typing import NamedTuple
+
+SPLITS = ("train", "val", "test")
+BOARD_TYPES = ("simple", "regular")
+OBJECT_TYPES = ("simple", "complex")
+TASKS = ("first_order", "sequence_function", "optimal_function", "repetition")
+SOURCES = ("template", "human", "codellama", "gpt4", "claude")
+# the published file suffix of each instruction source (template: the base file, no suffix)
+PUBLISHED_SUFFIX = {"template": None, "human": "hc", "codellama": "mg", "gpt4": "gpt4_mg", "claude": "claude_mg"}
+# the published dialogue key (instruction style) of each task; sequence_function reads
+# single_turn_sc where a file has it
+INSTRUCTION_STYLE = {"first_order": "multi_turn", "sequence_function": "single_turn",
+                     "optimal_function": "single_turn", "repetition": "regular"}
+# the builder's task when a describer (or a model) wrote the instruction: the paper's
+# model-written-instruction tasks
+DESCRIBED_TASK = {"simple": "optimal_function", "regular": "repetition"}
+
+
+class BoardKind(NamedTuple):
+    board: str             # simple | regular
+    object: str            # simple | complex
+    key: str               # simple_simple: our dataset files and configs
+    prefix: str            # sb_so: the published files
+    experiment: str        # simple_boards: cobot_describe's experiments
+    cell: str              # sb_so: cobot_instruct's experiments
+    published_object: str  # simple | challenge: the object type as the published files spell it
+
+    def dataset_file(self, split: str) -> str:
+        """Our dataset's file of one split: simple_simple_test.json."""
+        return f"{self.key}_{split}.json"
+
+    def published_stem(self, split: str, source: str = "template") -> str:
+        """The published file of one split and instruction source, without .json: rb_so_test_hc."""
+        suffix = PUBLISHED_SUFFIX[source]
+        return f"{self.prefix}_{split}" + (f"_{suffix}" if suffix else "")
+
+    def tasks(self) -> tuple[str, ...]:
+        """The tasks of this kind's boards: the simple-board styles, or repetition."""
+        return TASKS[:3] if self.board == "simple" else TASKS[3:]
+
+
+SIMPLE = BoardKind("simple", "simple", "simple_simple", "sb_so", "simple_boards", "sb_so", "simple")
+REGULAR_SIMPLE = BoardKind("regular", "simple", "regular_simple", "rb_so", "regular_boards_simple_objects", "rb_so",
+                           "simple")
+REGULAR_COMPLEX = BoardKind("regular", "complex", "regular_complex", "rb_cho", "regular_boards_complex_objects",
+                            "rb_co", "challenge")
+BOARD_KINDS = (SIMPLE, REGULAR_SIMPLE, REGULAR_COMPLEX)
+
+
+def board_kind(board: str, object_type: str) -> BoardKind:
+    """The kind of a (board type, object type) pair; ValueError for an unknown pair."""
+    for kind in BOARD_KINDS:
+        if (kind.board, kind.object) == (board, object_type):
+            return kind
+    raise ValueError(f"unknown board kind {board!r}/{object_type!r}")
+
+
+def kind_named(name: str) -> BoardKind:
+    """The kind of any of its spellings (key, prefix, experiment or cell); ValueError otherwise."""
+    for kind in BOARD_KINDS:
+        if name in (kind.key, kind.prefix, kind.experiment, kind.cell):
+            return kind
+    raise ValueError(f"unknown board kind {name!r}; expected one of "
+                     + ", ".join(k.key for k in BOARD_KINDS))
+
+
+class PublishedName(NamedTuple):
+    kind: BoardKind
+    split: str
+    source: str
+
+    @property
+    def stem(self) -> str:
+        return self.kind.published_stem(self.split, self.source)
+
+
+_SUFFIX_SOURCE = {suffix: source for source, suffix in PUBLISHED_SUFFIX.items()}
+PUBLISHED_NAME_RE = re.compile(
+    "^(?P<prefix>" + "|".join(k.prefix for k in BOARD_KINDS) + ")_(?P<split>" + "|".join(SPLITS) + ")"
+    "(?:_(?P<suffix>" + "|".join(s for s in PUBLISHED_SUFFIX.values() if s) + "))?(?:\\.json)?$")
+
+
+def parse_published_name(name: str) -> PublishedName | None:
+    """sb_so_test_hc(.json) -> (SIMPLE, test, human); None for a name that is not a published file's."""
+    m = PUBLISHED_NAME_RE.match(name)
+    if m is None:
+        return None
+    return PublishedName(kind_named(m["prefix"]), m["split"], _SUFFIX_SOURCE[m["suffix"]])
+
+
+def instructions_kind(source: str) -> str:
+    """template | human | model: how Table 3 groups an instruction source."""
+    return source if source in ("template", "human") else "model"
