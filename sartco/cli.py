@@ -16,7 +16,7 @@ COMMANDS = {
     "stats": ("sartco.instances.stats", "table 1 of the paper, computed by enumeration"),
     "import": ("sartco.instances.importer", "convert the published SARTCo files into the dataset format"),
     "import-instructions": ("sartco.instances.describer_import", "turn describer results into a dataset"),
-    "report": ("sartco.scores.report", "paper-style tables from a clemcore results folder"),
+    "report": ("sartco.report.tables", "paper-style tables from a clemcore results folder"),
     "export-prompts": ("sartco.protocols.export", "the prompts of a protocol's episodes (paper or sartco) as JSON lines"),
     "score-responses": ("sartco.protocols.score", "score raw answers (JSON lines) in a protocol (paper or sartco)"),
     "bench-run": ("sartco.clem.benchrun", "clem run against a stub model server: sequential vs the batching backend"),

@@ -19,7 +19,11 @@ Instruction sources: template (generated), human (`_hc` files), codellama / gpt4
 from __future__ import annotations
 
 import re
+from pathlib import Path
 from typing import NamedTuple
+
+# the shared data (published files, gold boards, paper protocol) beside the repository, read where it lies
+SHARED_DATA = Path(__file__).resolve().parents[1].parent / "shared" / "sartco-data"
 
 SPLITS = ("train", "val", "test")
 BOARD_TYPES = ("simple", "regular")

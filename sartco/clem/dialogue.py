@@ -37,7 +37,7 @@ from typing import Callable
 from sartco.follower import FollowError, emit, follow
 from sartco.follower.correct import apply_correction, correction_steps, pieces
 from sartco.instances.templates import render
-from sartco.scores.dialogue_table import DIALOGUE_SCORES, round_score
+from sartco.episode import DIALOGUE_SCORES, round_score
 from sartco.world.render import grid_explanation, grid_text
 
 from .builder import RULEBASED, Builder, fenced, rulebased_code

@@ -17,7 +17,8 @@ Score = 100 x Paper ES.
 from __future__ import annotations
 
 from sartco.paper import PROTOCOL
-from sartco.scores.paper_table import PAPER_SCORES, generation, load_table3
+from sartco.episode import PAPER_SCORES
+from sartco.paper.table3 import generation, load_table3
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
 
 from .benchmark import EPISODE_FIELDS

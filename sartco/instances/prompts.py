@@ -23,6 +23,7 @@ from __future__ import annotations
 
 from typing import Iterable
 
+from sartco.dataset import INSTRUCTION_STYLE, TASKS
 from sartco.world import COLORS, MAX_DEPTH, SHAPES
 from sartco.world.render import grid_explanation, grid_text
 
@@ -30,11 +31,8 @@ from .examples import MAX_EXAMPLES
 from .templates import render
 
 SECTIONS = ("system", "environment", "context", "task", "examples", "details")
-TASKS = ("first_order", "sequence_function", "optimal_function", "repetition")
 LABELS = {"first_order": ("Output",), "sequence_function": ("Function", "Usage"),
           "optimal_function": ("Function", "Usage"), "repetition": ("Output",)}
-INSTRUCTION_STYLE = {"first_order": "multi_turn", "sequence_function": "single_turn",
-                     "optimal_function": "single_turn", "repetition": "regular"}
 
 
 def _check_task(record: dict, task: str) -> None:

@@ -20,7 +20,7 @@ from typing import Iterator, NamedTuple
 
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
 
-DEFAULT_DATA = Path(__file__).resolve().parents[2].parent / "shared" / "sartco-data"
+from sartco.dataset import SHARED_DATA as DEFAULT_DATA
 
 
 class GoldProgram(NamedTuple):

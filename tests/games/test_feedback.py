@@ -212,7 +212,7 @@ def test_target_never_reaches_the_builder(play_episodes):
 def test_report_repair_table(play_episodes, tmp_path):
     from argparse import Namespace
 
-    from sartco.scores import report
+    from sartco.report import tables as report
     play_episodes([instance(0), instance(1, [fence(WRONG), fence("\n".join(GOLD))]), instance(2, [fence(PARTIAL)]),
                    instance(3, [NO_CODE])], EXPERIMENT)
     assert report.run(Namespace(results=tmp_path / "results", out=tmp_path / "scores", game=None)) == 0

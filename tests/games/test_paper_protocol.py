@@ -114,7 +114,7 @@ def test_a_while_loop_fails_the_paper_es_of_its_turn_but_not_ours(paper_episodes
 
 
 def _report(results_dir, out):
-    from sartco.scores import report
+    from sartco.report import tables as report
     code = report.run(argparse.Namespace(results=results_dir, out=out, game=None))
     assert code == 0
     return (out / "paper_table3.md").read_text()

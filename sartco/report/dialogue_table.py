@@ -18,18 +18,13 @@ import math
 from collections import defaultdict
 from pathlib import Path
 
-DIALOGUE_SCORES = ("ES@1", "ES@N", "Cell F1@1", "Cell F1@N", "First Success Round", "Questions Asked",
-                   "Corrections Sent", "Describer Words")
-ROUND_PREFIX = "ES Round "
+from sartco.episode import DIALOGUE_SCORES, ROUND_PREFIX, round_score
+
 HEADER = ["model", "game", "experiment", "mode", "questions", "corrections", "episodes", "played", "es_at_1",
           "es_at_n", "f1_at_1", "f1_at_n", "first_success_round", "questions_asked", "corrections_sent",
           "describer_words"]
 MODE_ORDER = ("oneshot", "clarify", "correct", "clarify_correct")
 COLOURS = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf")
-
-
-def round_score(k: int) -> str:
-    return f"{ROUND_PREFIX}{k}"
 
 
 def _num(value) -> float | None:
@@ -49,7 +44,7 @@ def _mean(values, *, pct: bool = False, zero: bool = False) -> float:
 
 def collect(results: Path, games: list[str] | None = None) -> list[dict]:
     """One row per scored episode that has dialogue scores."""
-    from .report import _load
+    from .tables import _load
     experiments: dict[Path, dict] = {}
     episodes = []
     for path in sorted(results.rglob("scores.json")):
@@ -152,7 +147,7 @@ def _escape(text: str) -> str:
 
 
 def write(results: Path, out: Path, games: list[str] | None = None) -> list[str]:
-    from .report import _md, _write_csv
+    from .tables import _md, _write_csv
     episodes = collect(results, games)
     if not episodes:
         return []

@@ -2,7 +2,7 @@
 
 Reads the paper's Table 3 (`table3.json` in ../shared/sartco-data/paper-protocol, at run time)
 and the episodes of paper-protocol experiments (experiment field `protocol: "paper"`, game entry
-cobot_instruct_paper) from the rows of sartco.scores.report.collect, and writes
+cobot_instruct_paper) from the rows of sartco.report.collect, and writes
   paper_table3.md / paper_table3.csv
 one line per Table 3 cell and instruction source, in the paper's order: the paper's EM, CB, ES for
 CodeLlama-34B, GPT-4 and Claude-3, then the same for each model of the results (the mean over the
@@ -19,43 +19,12 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from sartco.errors import UserError
-from sartco.instances.importer import SOURCE_ORDER
+from sartco.dataset import SOURCES as SOURCE_ORDER
+from sartco.episode import PAPER_SCORES
 from sartco.paper import PROTOCOL
-from sartco.program.gold import DEFAULT_DATA
+from sartco.paper.table3 import CELL_KEYS, TABLE3, cell_key as _key, cell_source as _source, generation, load_table3
 
-TABLE3 = DEFAULT_DATA / "paper-protocol" / "table3.json"
-PAPER_SCORES = {"em": "Paper EM", "cb": "Paper CB", "es": "Paper ES"}  # scores.json names (sartco.clem.paper logs them)
-CELL_KEYS = ("instructions", "board", "object", "task", "variant")
-MODEL_WRITTEN = "codellama"  # the source of the paper's model-written rows
 FLAG = "(!)"
-
-
-def load_table3(path: Path = TABLE3) -> dict:
-    try:
-        table = json.loads(Path(path).read_text(encoding="utf-8"))
-        generation(table)
-        for cell in table["cells"]:
-            _key({**cell, "source": _source(cell)}), dict(cell["scores"])
-    except (OSError, ValueError) as exc:
-        raise UserError(f"{path}: cannot read the paper's Table 3 ({exc})") from None
-    except (KeyError, TypeError) as exc:
-        raise UserError(f"{path}: not the paper's Table 3 (missing {exc})") from None
-    return table
-
-
-def generation(table: dict) -> dict:
-    """The paper's generation settings in clemcore's gen_args names."""
-    s = table["settings"]
-    return {"temperature": float(s["temperature"]), "max_tokens": int(s["max_new_tokens"])}
-
-
-def _source(cell: dict) -> str:
-    return cell["instructions"] if cell["instructions"] != "model" else MODEL_WRITTEN
-
-
-def _key(fields: dict) -> tuple:
-    return tuple(fields[k] for k in CELL_KEYS) + (fields["source"],)
 
 
 def paper_episodes(episodes: list[dict]) -> list[dict]:
@@ -162,7 +131,7 @@ def write(episodes: list[dict], out: Path, project_markdown: str, table3_path: P
     """Write paper_table3.md (the paper-protocol table, then `project_markdown`) and .csv when the
     results hold paper-protocol episodes. Returns (file names written, the paper table's Markdown
     or None)."""
-    from .report import _write_csv
+    from .tables import _write_csv
 
     rows = paper_episodes(episodes)
     if not rows:

@@ -6,13 +6,13 @@ as Markdown and CSV:
                               (the paper's Table 3; test-split experiments without ablation; the
                               cobot_instruct_published rows under cobot_instruct, TABLE3_GAME)
   paper_table3.md / .csv      Table 3 in the paper protocol beside the paper's figures, then table3.md
-                              (sartco.scores.paper_table; only when there are paper-protocol episodes)
+                              (sartco.report.paper_table; only when there are paper-protocol episodes)
   ablations.md / ablations.csv  the val-split ablations (in-context examples, removed prompt sections)
   errors.md / errors.csv      episodes per error category, per model and experiment
   repair.md / repair.csv      feedback experiments (experiment field `attempts` N > 1), per model
                               and experiment: ES@1, ES@N, the share of first-attempt failures
                               repaired, mean attempts used (only when there are such episodes)
-  dialogue.md / .csv / dialogue_rounds.svg   cobot_describe's dialogue scores (sartco.scores.dialogue_table)
+  dialogue.md / .csv / dialogue_rounds.svg   cobot_describe's dialogue scores (sartco.report.dialogue_table)
 Numbers are percentages over all episodes of a cell; an aborted episode (no code found) counts
 as 0 for EM, CB and ES, and is listed as parse_error in the error tables. Feedback experiments
 and cobot_describe's dialogue modes are kept out of table3 and the ablations (they are not the
@@ -30,8 +30,7 @@ from pathlib import Path
 
 from sartco.clem.feedback import max_attempts
 from sartco.errors import UserError
-from sartco.instances.importer import SOURCE_ORDER
-from sartco.instances.prompts import TASKS as TASK_ORDER
+from sartco.dataset import SOURCES as SOURCE_ORDER, TASKS as TASK_ORDER
 from sartco.world import ErrorCode
 
 # clemgame entries whose cells are rows of another game's Table 3 (the published human- and
