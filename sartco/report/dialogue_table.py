@@ -20,18 +20,13 @@ from pathlib import Path
 
 from sartco.episode import DIALOGUE_SCORES, ROUND_PREFIX, round_score
 
+from .files import load_json, markdown_table, number, write_csv
+
 HEADER = ["model", "game", "experiment", "mode", "questions", "corrections", "episodes", "played", "es_at_1",
           "es_at_n", "f1_at_1", "f1_at_n", "first_success_round", "questions_asked", "corrections_sent",
           "describer_words"]
 MODE_ORDER = ("oneshot", "clarify", "correct", "clarify_correct")
 COLOURS = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf")
-
-
-def _num(value) -> float | None:
-    if value is None or isinstance(value, str):
-        return None
-    value = float(value)
-    return None if math.isnan(value) else value
 
 
 def _mean(values, *, pct: bool = False, zero: bool = False) -> float:
@@ -44,17 +39,16 @@ def _mean(values, *, pct: bool = False, zero: bool = False) -> float:
 
 def collect(results: Path, games: list[str] | None = None) -> list[dict]:
     """One row per scored episode that has dialogue scores."""
-    from .tables import _load
     experiments: dict[Path, dict] = {}
     episodes = []
     for path in sorted(results.rglob("scores.json")):
-        scores = _load(path).get("episode scores", {})
+        scores = load_json(path).get("episode scores", {})
         if round_score(0) not in scores:
             continue
         exp_dir = path.parent.parent
         if exp_dir not in experiments:
             exp_file = exp_dir / "experiment.json"
-            experiments[exp_dir] = _load(exp_file) if exp_file.is_file() else {}
+            experiments[exp_dir] = load_json(exp_file) if exp_file.is_file() else {}
         exp = experiments[exp_dir]
         game = exp.get("game_name") or exp_dir.parent.name
         if games and game not in games:
@@ -63,8 +57,8 @@ def collect(results: Path, games: list[str] | None = None) -> list[dict]:
         episodes.append({"model": exp_dir.parent.parent.name, "game": game, "experiment": exp.get("name", exp_dir.name),
                          "mode": exp.get("mode") or "oneshot", "questions": exp.get("questions", 0) or 0,
                          "corrections": exp.get("corrections", 0) or 0, "aborted": int(scores.get("Aborted", 0) or 0),
-                         "rounds": [_num(scores[round_score(k)]) for k in rounds],
-                         **{name: _num(scores.get(name)) for name in DIALOGUE_SCORES}})
+                         "rounds": [number(scores[round_score(k)]) for k in rounds],
+                         **{name: number(scores.get(name)) for name in DIALOGUE_SCORES}})
     return episodes
 
 
@@ -147,12 +141,11 @@ def _escape(text: str) -> str:
 
 
 def write(results: Path, out: Path, games: list[str] | None = None) -> list[str]:
-    from .tables import _md, _write_csv
     episodes = collect(results, games)
     if not episodes:
         return []
     rows = rows_of(episodes)
-    _write_csv(out / "dialogue.csv", HEADER, rows)
+    write_csv(out / "dialogue.csv", HEADER, rows)
     (out / "dialogue_rounds.svg").write_text(svg(curves(episodes)), encoding="utf-8")
     md = ("# cobot_describe as a dialogue (clarification questions, corrections)\n\n"
           "ES@1 / ES@N, F1@1 / F1@N = execution success and cell F1 (%) after the first / the last build "
@@ -160,7 +153,7 @@ def write(results: Path, out: Path, games: list[str] | None = None) -> list[str]
           "success over the episodes that succeeded (0 = the first build); questions, corrections and "
           "describer words = means per played episode.\n\n"
           "![ES after round k](dialogue_rounds.svg)\n\n")
-    md += _md(["model", "game", "experiment", "mode", "K", "R", "episodes", "played", "ES@1", "ES@N", "F1@1", "F1@N",
+    md += markdown_table(["model", "game", "experiment", "mode", "K", "R", "episodes", "played", "ES@1", "ES@N", "F1@1", "F1@N",
                "first success", "questions", "corrections", "describer words"],
               [[r[h] for h in HEADER] for r in rows])
     (out / "dialogue.md").write_text(md, encoding="utf-8")

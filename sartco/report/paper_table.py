@@ -16,13 +16,14 @@ Table 3 (report's table3.md) follows in the same file, so both are seen at one g
 """
 from __future__ import annotations
 
-import json
 from pathlib import Path
 
 from sartco.dataset import SOURCES as SOURCE_ORDER
 from sartco.episode import PAPER_SCORES
 from sartco.paper import PROTOCOL
 from sartco.paper.table3 import CELL_KEYS, TABLE3, cell_key as _key, cell_source as _source, generation, load_table3
+
+from .files import write_csv
 
 FLAG = "(!)"
 
@@ -131,7 +132,6 @@ def write(episodes: list[dict], out: Path, project_markdown: str, table3_path: P
     """Write paper_table3.md (the paper-protocol table, then `project_markdown`) and .csv when the
     results hold paper-protocol episodes. Returns (file names written, the paper table's Markdown
     or None)."""
-    from .tables import _write_csv
 
     rows = paper_episodes(episodes)
     if not rows:
@@ -140,7 +140,7 @@ def write(episodes: list[dict], out: Path, project_markdown: str, table3_path: P
     wanted = generation(table3)
     header, long_rows = table(table3, rows)
     md = markdown((header, long_rows), settings_note(rows, wanted), wanted)
-    _write_csv(out / "paper_table3.csv", header, long_rows)
+    write_csv(out / "paper_table3.csv", header, long_rows)
     (out / "paper_table3.md").write_text("# SARTCo results: the paper's protocol and ours\n\n" + md + "\n"
                                          + project_markdown, encoding="utf-8")
     return ["paper_table3.md", "paper_table3.csv"], md

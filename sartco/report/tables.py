@@ -21,9 +21,6 @@ paper's protocol).
 from __future__ import annotations
 
 import argparse
-import csv
-import json
-import math
 import re
 from collections import Counter, defaultdict
 from pathlib import Path
@@ -37,7 +34,8 @@ from sartco.world import ErrorCode
 # model-written instructions beside the template ones, as in the paper); every other game name
 # (cobot_instruct_ablations, _feedback, ...) is reported under its own name
 TABLE3_GAME = {"cobot_instruct_published": "cobot_instruct"}
-from . import dialogue_table
+from . import dialogue_table, paper_table
+from .files import load_json, markdown_table, number, write_csv
 
 TASK_NAMES = {"first_order": "first-order (multi-turn)", "sequence_function": "function from puts",
               "optimal_function": "optimal function", "repetition": "repetition"}
@@ -48,20 +46,6 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--out", type=Path, default=Path("scores"), help="folder for the tables (default: scores/)")
     parser.add_argument("-g", "--game", action="append", default=None,
                         help="only this game (repeatable; default: every game with SARTCo experiments)")
-
-
-def _num(value) -> float | None:
-    if value is None or isinstance(value, str):
-        return None
-    value = float(value)
-    return None if math.isnan(value) else value
-
-
-def _load(path: Path) -> dict:
-    try:
-        return json.loads(path.read_text(encoding="utf-8"))
-    except (OSError, ValueError) as exc:
-        raise UserError(f"{path}: cannot read JSON ({exc})") from None
 
 
 def collect(results: Path, games: list[str] | None = None) -> list[dict]:
@@ -75,14 +59,14 @@ def collect(results: Path, games: list[str] | None = None) -> list[dict]:
         exp_dir = episode_dir.parent
         if exp_dir not in experiments:
             exp_file = exp_dir / "experiment.json"
-            experiments[exp_dir] = _load(exp_file) if exp_file.is_file() else None
+            experiments[exp_dir] = load_json(exp_file) if exp_file.is_file() else None
         exp = experiments[exp_dir]
         if not exp or "task" not in exp or "board_type" not in exp:
             continue  # not a SARTCo experiment
         game = exp.get("game_name") or exp_dir.parent.name
         if games and game not in games:
             continue
-        data = _load(path)
+        data = load_json(path)
         scores = data.get("episode scores", {})
         try:
             attempts = max_attempts(exp)
@@ -93,12 +77,12 @@ def collect(results: Path, games: list[str] | None = None) -> list[dict]:
             "board_type": exp["board_type"], "object_type": exp["object_type"], "task": exp["task"],
             "source": exp.get("source", ""), "split": exp.get("split", ""), "ablation": exp.get("ablation"),
             "aborted": int(scores.get("Aborted", 0) or 0),
-            "em": _num(scores.get("Exact Match")), "cb": _num(scores.get("CodeBLEU")),
-            "es": _num(scores.get("Execution Success")), "f1": _num(scores.get("Cell F1")),
+            "em": number(scores.get("Exact Match")), "cb": number(scores.get("CodeBLEU")),
+            "es": number(scores.get("Execution Success")), "f1": number(scores.get("Cell F1")),
             "category": scores.get("Error Category") or (str(ErrorCode.PARSE_ERROR) if scores.get("Aborted") else "unknown"),
             "max_attempts": attempts, "feedback_of": exp.get("feedback_of", ""), "mode": exp.get("mode") or "oneshot",
-            "es1": _num(scores.get("ES@1", scores.get("Execution Success"))),
-            "attempts_used": _num(scores.get("Attempts")),
+            "es1": number(scores.get("ES@1", scores.get("Execution Success"))),
+            "attempts_used": number(scores.get("Attempts")),
             "experiment_fields": exp, "scores": scores, "player_models": data.get("player_models"),
         })
     if not episodes:
@@ -204,20 +188,6 @@ def repair(episodes: list[dict]) -> tuple[list[str], list[dict]]:
             "first_failures", "repaired", "repaired_share", "mean_attempts"], rows
 
 
-def _write_csv(path: Path, header: list[str], rows: list[dict]) -> None:
-    with path.open("w", newline="", encoding="utf-8") as f:
-        writer = csv.DictWriter(f, fieldnames=header, lineterminator="\n")
-        writer.writeheader()
-        writer.writerows(rows)
-
-
-def _md(header: list[str], rows: list[list]) -> str:
-    out = ["| " + " | ".join(header) + " |", "|" + "|".join("---" for _ in header) + "|"]
-    out += ["| " + " | ".join("" if v is None else f"{v:.2f}" if isinstance(v, float) else str(v) for v in r) + " |"
-            for r in rows]
-    return "\n".join(out) + "\n"
-
-
 def table3_markdown(rows: list[dict], title: str, keys: list[str]) -> str:
     """The paper's wide layout: one line per cell, EM / CB / ES per model side by side."""
     models = sorted({r["model"] for r in rows})
@@ -236,7 +206,7 @@ def table3_markdown(rows: list[dict], title: str, keys: list[str]) -> str:
     note = "; ".join(f"{m}: {sum(r['episodes'] for r in rs)} episodes, "
                      f"{_pct([r['played'] / 100 for r in rs for _ in range(r['episodes'])]):.2f}% played"
                      for m, rs in played.items())
-    return f"## {title}\n\nEM = exact match, CB = CodeBLEU, ES = execution success (%). {note}.\n\n" + _md(header, body)
+    return f"## {title}\n\nEM = exact match, CB = CodeBLEU, ES = execution success (%). {note}.\n\n" + markdown_table(header, body)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -245,7 +215,7 @@ def run(args: argparse.Namespace) -> int:
     out.mkdir(parents=True, exist_ok=True)
     written = []
     header, rows = table3(episodes)
-    _write_csv(out / "table3.csv", header, rows)
+    write_csv(out / "table3.csv", header, rows)
     md = "# SARTCo results (paper Table 3 layout)\n\n"
     if not rows:
         md += "No episodes of the paper's protocol (only feedback experiments or dialogue modes: see repair.md, dialogue.md).\n"
@@ -254,12 +224,11 @@ def run(args: argparse.Namespace) -> int:
                               ["board_type", "object_type", "task", "source"]) + "\n"
     (out / "table3.md").write_text(md, encoding="utf-8")
     written += ["table3.md", "table3.csv"]
-    from .paper_table import write as write_paper_table  # the paper protocol's Table 3, beside the paper's
-    files, paper_md = write_paper_table(episodes, out, md)
+    files, paper_md = paper_table.write(episodes, out, md)  # the paper protocol's Table 3, beside the paper's
     written += files
     header, rows = ablations(episodes)
     if rows:
-        _write_csv(out / "ablations.csv", header, rows)
+        write_csv(out / "ablations.csv", header, rows)
         md = "# Ablations (val split)\n\n"
         for game in sorted({r["game"] for r in rows}):
             md += table3_markdown([r for r in rows if r["game"] == game], game,
@@ -268,19 +237,19 @@ def run(args: argparse.Namespace) -> int:
         written += ["ablations.md", "ablations.csv"]
     header, rows = repair(episodes)
     if rows:
-        _write_csv(out / "repair.csv", header, rows)
+        write_csv(out / "repair.csv", header, rows)
         md = ("# Repair after execution feedback (feedback experiments)\n\n"
               "ES@1 / ES@N = execution success (%) after the first / the last attempt (aborted = 0); "
               "repaired share = (successes at N - successes at 1) / first-attempt failures (%; "
               "nan when nothing failed); mean attempts = attempts used per episode.\n\n")
-        md += _md(["model", "game", "experiment", "of", "N", "episodes", "ES@1", "ES@N", "failed@1", "repaired",
+        md += markdown_table(["model", "game", "experiment", "of", "N", "episodes", "ES@1", "ES@N", "failed@1", "repaired",
                    "repaired share", "mean attempts"], [[r[h] for h in header] for r in rows])
         (out / "repair.md").write_text(md, encoding="utf-8")
         written += ["repair.md", "repair.csv"]
     written += dialogue_table.write(args.results, out, args.game)  # cobot_describe's dialogue modes
     header, rows = errors(episodes)
-    _write_csv(out / "errors.csv", header, rows)
-    md = "# Error categories (episodes per category)\n\n" + _md(header, [[r[h] for h in header] for r in rows])
+    write_csv(out / "errors.csv", header, rows)
+    md = "# Error categories (episodes per category)\n\n" + markdown_table(header, [[r[h] for h in header] for r in rows])
     (out / "errors.md").write_text(md, encoding="utf-8")
     written += ["errors.md", "errors.csv"]
     if paper_md:
