@@ -38,8 +38,9 @@ from typing import Iterable
 from sartco.dataset import REGULAR_SIMPLE, PublishedName
 from sartco.errors import UserError
 from sartco.published.files import PUBLISHED, gold_boards, read_samples
+from sartco.published.samples import template_stem
 
-from .examples import Pools, editor_code, seed_stem
+from .examples import Pools, editor_code
 from .vocabulary import INSTRUCTION_LABEL, LABELS, PROTOCOL, VARIANTS, published_test_files, template_name, variants_of
 
 DEFAULT_PUBLISHED = PUBLISHED
@@ -162,7 +163,7 @@ def _episode(pools: Pools, data_dir: Path, file: PublishedName, sid: str, sample
     texts = [t["<Programmer>"] for t in turns]
     codes = [editor_code(t["<Editor>"], v.family) for t in turns]
     _, _, count, combo, _ = sid.split("/")
-    seed = seed_stem(sample["seed_template"]) if file.kind.board == REGULAR_SIMPLE.board else None
+    seed = template_stem(sample["seed_template"]) if file.kind.board == REGULAR_SIMPLE.board else None
     examples, origin = pools.examples(file, v.training, count, combo, seed)
     template = _template(data_dir / "paper-protocol" / template_name(variant))
     messages = [first_message(template, sample, variant, examples, texts[0])] + [instruction(t) for t in texts[1:]]

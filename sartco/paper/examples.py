@@ -18,6 +18,7 @@ from sartco.errors import UserError
 from sartco.instances.prompts import instruction_text
 from sartco.instances.storage import load_dataset
 from sartco.published.files import read_samples
+from sartco.published.samples import template_stem
 
 from .vocabulary import VARIANTS, training_stem
 
@@ -42,10 +43,6 @@ class TrainItem:
     turns: dict = field(default_factory=dict)   # training variant -> [{"text", "code"}, ...]
 
 
-def seed_stem(path: str) -> str:
-    return Path(path).stem
-
-
 def published_pool(samples: list[tuple[str, dict]], family_of_training: dict[str, str]) -> list[TrainItem]:
     """A published training file's samples (sartco.published.files.read_samples) as candidates, in file order."""
     items = []
@@ -57,7 +54,7 @@ def published_pool(samples: list[tuple[str, dict]], family_of_training: dict[str
             if dialogue:
                 turns[training] = [{"text": t["<Programmer>"], "code": editor_code(t["<Editor>"], family)}
                                    for t in dialogue["instructions"]]
-        seed = seed_stem(sample["seed_template"]) if board_type == REGULAR_SIMPLE.board else None
+        seed = template_stem(sample["seed_template"]) if board_type == REGULAR_SIMPLE.board else None
         items.append(TrainItem(count, combo, seed, turns))
     return items
 

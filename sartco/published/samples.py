@@ -76,7 +76,8 @@ def _one_text(dialogue: Any, path: str) -> str:
     return texts[0]
 
 
-def _stem(template_path: str) -> str:
+def template_stem(template_path: str) -> str:
+    """A sample's seed_template path as our records name it: .../regular_seed12.j2 -> regular_seed12."""
     return Path(template_path).name.removesuffix(".j2")
 
 
@@ -153,7 +154,7 @@ def base_record(file: str, sample_path: str, sample: Any, defects: list[Defect])
                                          f"kept the code's")
         placement = {"x": xs, "y": ys, "orientations": list(_get(sample, "orientations", kind=list))}
         instructions = {"template": template_simple(dialogues)}
-        seed = _stem(_get(sample, "seed_template", "single_turn"))
+        seed = template_stem(_get(sample, "seed_template", "single_turn"))
         arrangement = None
         occupied = (None, None)
     else:
@@ -164,7 +165,7 @@ def base_record(file: str, sample_path: str, sample: Any, defects: list[Defect])
         placement = None
         instructions = {"template": {"regular": _one_text(dialogues.get("regular"), "dialogues.regular")}}
         seed = None  # the published regular samples do not name the object's code seed
-        arrangement = _stem(_get(sample, "seed_template"))
+        arrangement = template_stem(_get(sample, "seed_template"))
         occupied = (_get(sample, "occupied_rows", kind=int), _get(sample, "occupied_cols", kind=int))
     if code_shapes is not None and code_shapes != shapes:
         defect("shapes_mismatch", f"shapes field {shapes} but the code builds {code_shapes}; kept the code's")
