@@ -14,7 +14,7 @@ COMMANDS = {
     "bench-execute": ("sartco.program.bench", "throughput of `sartco execute` against bare compile()"),
     "generate": ("sartco.instances.generate", "write a dataset version from a YAML config and a seed"),
     "stats": ("sartco.instances.stats", "table 1 of the paper, computed by enumeration"),
-    "import": ("sartco.instances.importer", "convert the published SARTCo files into the dataset format"),
+    "import": ("sartco.published.importer", "convert the published SARTCo files into the dataset format"),
     "import-instructions": ("sartco.instances.describer_import", "turn describer results into a dataset"),
     "report": ("sartco.report.tables", "paper-style tables from a clemcore results folder"),
     "export-prompts": ("sartco.protocols.export", "the prompts of a protocol's episodes (paper or sartco) as JSON lines"),

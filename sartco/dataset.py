@@ -14,13 +14,15 @@ experiment: cobot_describe's experiment names; cell: cobot_instruct's experiment
 The published files call complex objects "challenge" (`published_object`).
 
 Instruction sources: template (generated), human (`_hc` files), codellama / gpt4 / claude (`_mg`,
-`_gpt4_mg`, `_claude_mg`: model-written). Tasks are the paper's code styles.
+`_gpt4_mg`, `_claude_mg`: model-written). Tasks are the paper's code styles. The published dialogue
+keys (`DIALOGUE_KEYS`: multi_turn, single_turn_hai, regular_mg, ...) name a task and who wrote the
+instructions. A dataset file is a list of `BoardRecord`s (`RECORD_KEYS` their key order).
 """
 from __future__ import annotations
 
 import re
 from pathlib import Path
-from typing import NamedTuple
+from typing import Any, NamedTuple, TypedDict
 
 # the shared data (published files, gold boards, paper protocol) beside the repository, read where it lies
 SHARED_DATA = Path(__file__).resolve().parents[1].parent / "shared" / "sartco-data"
@@ -36,9 +38,58 @@ PUBLISHED_SUFFIX = {"template": None, "human": "hc", "codellama": "mg", "gpt4": 
 # single_turn_sc where a file has it
 INSTRUCTION_STYLE = {"first_order": "multi_turn", "sequence_function": "single_turn",
                      "optimal_function": "single_turn", "repetition": "regular"}
+
+
+class DialogueKey(NamedTuple):
+    task: str          # TASKS
+    instructions: str  # template | human | model (instructions_kind of the file's source)
+    style: str         # the template dialogue key (and our records' instruction style) it is written in
+
+
+# every dialogue key of the published files, in Table 3 order (template, human, model; first-order,
+# sequence, optimal; simple before regular boards). A variant file (_hc, _mg, ...) repeats its test
+# file's template keys and adds its own.
+DIALOGUE_KEYS = {
+    "multi_turn": DialogueKey("first_order", "template", "multi_turn"),
+    "single_turn_sc": DialogueKey("sequence_function", "template", "single_turn_sc"),
+    "single_turn": DialogueKey("optimal_function", "template", "single_turn"),
+    "regular": DialogueKey("repetition", "template", "regular"),
+    "single_turn_hai_sc": DialogueKey("sequence_function", "human", "single_turn_sc"),
+    "single_turn_hai": DialogueKey("optimal_function", "human", "single_turn"),
+    "regular_hai": DialogueKey("repetition", "human", "regular"),
+    "single_turn_mg": DialogueKey("optimal_function", "model", "single_turn"),
+    "regular_mg": DialogueKey("repetition", "model", "regular"),
+}
+
 # the builder's task when a describer (or a model) wrote the instruction: the paper's
 # model-written-instruction tasks
 DESCRIBED_TASK = {"simple": "optimal_function", "regular": "repetition"}
+
+
+class BoardRecord(TypedDict):
+    """One board of a dataset file (docs/ARCHITECTURE.md "Datasets"), the keys in file order."""
+    id: str                      # simple_simple_test_0007 | sb_so_test/simple/simple/2/wn/0
+    board_type: str              # BOARD_TYPES
+    object_type: str             # OBJECT_TYPES
+    split: str                   # SPLITS
+    combo_name: str
+    shapes: list[str]
+    colors: list[str]
+    quadrant: str
+    rows: int
+    cols: int
+    seed: str | None             # the object's code seed template
+    arrangement: str | None      # regular boards: the arrangement template
+    placement: dict[str, list] | None   # simple boards: {"x", "y", "orientations"}, one per put
+    occupied_rows: int | None    # regular boards
+    occupied_cols: int | None
+    target: dict[str, list[list[str]]]  # the board the gold code builds, canonical cells
+    code: dict[str, dict[str, Any]]     # task -> its code ("total_code" the whole program)
+    instructions: dict[str, dict[str, Any]]  # source -> style -> text (multi_turn: a list of texts)
+    provenance: dict[str, Any]   # {"source": "generated"} | {"source": "published", "file", "sample"} | ...
+
+
+RECORD_KEYS = tuple(BoardRecord.__annotations__)
 
 
 class BoardKind(NamedTuple):

@@ -18,42 +18,30 @@ import sys
 from collections import defaultdict
 from pathlib import Path
 
+from sartco.dataset import DIALOGUE_KEYS, SHARED_DATA, SIMPLE
 from sartco.follower import FollowError, follow
 from sartco.program import compare, execute_many
-from sartco.program.gold import DEFAULT_DATA, base_of, samples
+from sartco.published import files as published
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
 
-# dialogue key -> (task, source); multi_turn is the first-order task, one instruction per turn
-SIMPLE_VARIANTS = {
-    "multi_turn": ("first_order", "template"),
-    "single_turn_sc": ("sequence_function", "template"),
-    "single_turn": ("optimal_function", "template"),
-    "single_turn_hai": ("optimal_function", "human"),
-    "single_turn_hai_sc": ("sequence_function", "human"),
-    "single_turn_mg": ("optimal_function", "model"),
-}
-REGULAR_VARIANTS = {"regular": ("repetition", "template"), "regular_hai": ("repetition", "human"),
-                    "regular_mg": ("repetition", "model")}
 
-
-def evaluate(data: Path = DEFAULT_DATA, files: list[str] | None = None):
-    """{(file, variant): {"n", "es", "parsed", "failures": [...]}} over the published files."""
+def evaluate(data: Path = SHARED_DATA, files: list[str] | None = None):
+    """{(file, variant): {"n", "es", "parsed", "failures": [...]}} over the published files; a
+    variant is a dialogue key of the file's board kind (multi_turn: one instruction per turn)."""
     results: dict[tuple[str, str], dict] = {}
     pending = []  # (result row, sample id, texts, program, gold board), run in one batch
-    gold_stems = sorted(p.stem for p in (data / "gold_boards").glob("*.json"))
     for path in sorted((data / "published").glob("*.json")):
         name = path.stem
         if files and name not in files:
             continue
-        gold = json.loads((data / "gold_boards" / f"{base_of(name, gold_stems) or name}.json").read_text())
-        doc = json.loads(path.read_text())
-        for _, sid, sample in samples(doc):
-            regular = "occupied_rows" in sample
-            variants = REGULAR_VARIANTS if regular else SIMPLE_VARIANTS
+        gold = published.gold_boards(data / "gold_boards", path.name) or {}
+        kind = published.name_of(path.name).kind
+        regular = kind != SIMPLE
+        for sid, sample in published.read_samples(path):
             for variant, dialogue in sample["dialogues"].items():
-                if variant not in variants:
+                if variant not in DIALOGUE_KEYS or DIALOGUE_KEYS[variant].task not in kind.tasks():
                     continue
-                task, source = variants[variant]
+                task, source = DIALOGUE_KEYS[variant].task, DIALOGUE_KEYS[variant].instructions
                 texts = [turn["<Programmer>"] for turn in dialogue["instructions"]]
                 context = sample["code"]["function"] if regular else ""
                 r = results.setdefault((name, variant), {"source": source, "task": task, "n": 0, "es": 0,
@@ -79,7 +67,7 @@ def evaluate(data: Path = DEFAULT_DATA, files: list[str] | None = None):
 
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--data", type=Path, default=DEFAULT_DATA)
+    ap.add_argument("--data", type=Path, default=SHARED_DATA)
     ap.add_argument("--file", action="append", help="only these published files (stem), repeatable")
     ap.add_argument("--failures", type=int, default=0, help="show this many failures per file/variant")
     ap.add_argument("--json", type=Path, help="write the table as JSON")

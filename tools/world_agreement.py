@@ -32,13 +32,14 @@ import sys
 from collections import Counter, defaultdict
 from pathlib import Path
 
+from sartco.dataset import SHARED_DATA, SIMPLE, SPLITS
 from sartco.program import compare, execute_many
-from sartco.program.gold import DEFAULT_DATA, samples
+from sartco.published import files as published
 from sartco.world import BRIDGES, COLORS, DEFAULT_COLS, DEFAULT_ROWS, MAX_DEPTH, SHAPES
 
 REPO = Path(__file__).resolve().parents[1]
 DEFAULT_DATASET = REPO / "instances" / "v1"
-PUBLISHED = ("sb_so_test", "sb_so_val")
+PUBLISHED = (SIMPLE.published_stem("test"), SIMPLE.published_stem("val"))
 SUCCESS = "success"
 PUT = re.compile(r"put\(board, '([^']*)', '([^']*)', (-?\d+), (-?\d+)\)")
 UNKNOWN_SHAPES = ("bridge", "bolt", "Washer")
@@ -137,14 +138,17 @@ def parse_puts(lines) -> list[tuple]:
     return out
 
 
-def gold_boards(data: Path = DEFAULT_DATA, dataset: Path | None = DEFAULT_DATASET):
+def gold_boards(data: Path = SHARED_DATA, dataset: Path | None = DEFAULT_DATASET):
     """(board id, gold puts, target) of every simple board of the corpus, in a fixed order."""
     for stem in PUBLISHED:
-        boards = json.loads((data / "gold_boards" / f"{stem}.json").read_text())
-        for _, sid, sample in samples(json.loads((data / "published" / f"{stem}.json").read_text())):
+        boards = published.gold_boards(data / "gold_boards", f"{stem}.json")
+        for sid, sample in published.read_samples(data / "published" / f"{stem}.json"):
             yield f"{stem}/{sid}", parse_puts(sample["code"]["multi_turn"]["output"]), boards[sid]
     if dataset is not None:
-        for path in sorted(Path(dataset).glob("simple_simple_*.json")):
+        for name in sorted(SIMPLE.dataset_file(split) for split in SPLITS):
+            path = Path(dataset) / name
+            if not path.is_file():
+                continue
             for record in json.loads(path.read_text()):
                 yield record["id"], parse_puts(record["code"]["first_order"]["steps"]), record["target"]
 
@@ -204,7 +208,7 @@ MUTATIONS = {
 }
 
 
-def corpus(seed: int = 0, data: Path = DEFAULT_DATA, dataset: Path | None = DEFAULT_DATASET):
+def corpus(seed: int = 0, data: Path = SHARED_DATA, dataset: Path | None = DEFAULT_DATASET):
     """(board id, mutation kind, mutated puts, target): one mutant per board and kind that applies."""
     for board_id, puts, target in gold_boards(data, dataset):
         for kind, mutate in MUTATIONS.items():
@@ -230,7 +234,7 @@ def our_categories(mutants) -> list[str]:
     return out
 
 
-def measure(seed: int = 0, data: Path = DEFAULT_DATA, dataset: Path | None = DEFAULT_DATASET) -> dict:
+def measure(seed: int = 0, data: Path = SHARED_DATA, dataset: Path | None = DEFAULT_DATASET) -> dict:
     mutants = list(corpus(seed, data, dataset))
     ours = our_categories(mutants)
     theirs = [authors_category(puts, target) for _, _, puts, target in mutants]
@@ -261,7 +265,7 @@ def measure(seed: int = 0, data: Path = DEFAULT_DATA, dataset: Path | None = DEF
 
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--data", type=Path, default=DEFAULT_DATA, help="the shared sartco-data folder")
+    parser.add_argument("--data", type=Path, default=SHARED_DATA, help="the shared sartco-data folder")
     parser.add_argument("--dataset", type=Path, default=DEFAULT_DATASET, help="a generated dataset (simple boards)")
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--json", type=Path, help="also write the figures here")

@@ -35,7 +35,7 @@ from sartco.clem.describer import INSTRUCTION_SLOT
 from sartco.clem.dialogue import DEFAULT_CORRECTIONS, DEFAULT_QUESTIONS, MODES, clarify_note
 from sartco.clem.episodes import DESCRIBED_TASK, board_fields
 from sartco.instances.examples import select_examples
-from sartco.instances.generate import load_dataset
+from sartco.instances.storage import load_dataset
 from sartco.instances.prompts import builder_prompt, describer_prompt, instruction_text
 
 GAME_DIR = Path(__file__).resolve().parent
@@ -50,7 +50,7 @@ EXPERIMENTS = {
 
 
 def split_records(dataset: Path, files: dict[str, list[dict]], stem: str, split: str) -> list[dict]:
-    """The records of one split (files: from sartco.instances.generate.load_dataset)."""
+    """The records of one split (files: from sartco.instances.storage.load_dataset)."""
     name = f"{stem}_{split}.json"
     if name not in files:
         sys.exit(f"instancegenerator: {dataset / name}: missing (generate the dataset first: sartco generate)")

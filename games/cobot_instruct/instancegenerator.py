@@ -65,7 +65,7 @@ from clemcore.clemgame import GameInstanceGenerator
 from sartco.errors import UserError
 from sartco.clem.episodes import DESCRIBED_TASK, board_fields
 from sartco.instances.examples import MAX_EXAMPLES, select_examples
-from sartco.instances.generate import load_dataset
+from sartco.instances.storage import load_dataset
 from sartco.instances.prompts import SECTIONS, builder_prompt, builder_turn, gold_code, instruction_text
 
 GAME_DIR = Path(__file__).resolve().parent

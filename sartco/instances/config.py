@@ -9,14 +9,15 @@ from typing import Any
 
 import yaml
 
+from sartco.dataset import BOARD_KINDS, REGULAR_COMPLEX, REGULAR_SIMPLE, SIMPLE, SPLITS
 from sartco.errors import UserError
 from sartco.world import COLORS
 
 from .templates import resources_dir
 
 FORMAT = "sartco-config/1"
-BOARD_TYPES = ("simple_simple", "regular_simple", "regular_complex")
-SPLITS = ("train", "val", "test")
+SECTIONS = tuple(kind.key for kind in BOARD_KINDS)  # the config's per-kind sections: simple_simple, ...
+REGULAR_SECTIONS = (REGULAR_SIMPLE.key, REGULAR_COMPLEX.key)
 QUADRANTS = ("tl", "tr", "bl", "br")
 
 
@@ -33,7 +34,7 @@ class Config:
     colors: tuple[str, ...]
     seeds: tuple[str, ...]
     arrangements: dict[str, tuple[str, ...]]          # regular_simple / regular_complex -> names
-    splits: dict[str, dict[str, SplitSpec]]           # board type -> split -> spec
+    splits: dict[str, dict[str, SplitSpec]]           # board kind key -> split -> spec
     raw: dict[str, Any]                               # as read, for the manifest
 
 
@@ -84,22 +85,22 @@ def parse_config(raw: Any, path: str = "<config>") -> Config:
         if not (templates / "code" / "simple" / f"{s}.j2").is_file():
             fail("seeds", f"seed names with a template in {templates / 'code' / 'simple'}", s)
     arr_raw = raw.get("arrangements")
-    if not isinstance(arr_raw, dict) or set(arr_raw) != {"regular_simple", "regular_complex"}:
-        fail("arrangements", "a mapping with keys regular_simple and regular_complex", arr_raw)
+    if not isinstance(arr_raw, dict) or set(arr_raw) != set(REGULAR_SECTIONS):
+        fail("arrangements", f"a mapping with keys {' and '.join(REGULAR_SECTIONS)}", arr_raw)
     arrangements = {}
-    for key in ("regular_simple", "regular_complex"):
+    for key in REGULAR_SECTIONS:
         arrangements[key] = names(f"arrangements.{key}", arr_raw[key])
         for a in arrangements[key]:
             if not (templates / "code" / "regular" / f"{a}.j2").is_file():
                 fail(f"arrangements.{key}", f"arrangement names with a template in {templates / 'code' / 'regular'}", a)
     splits_raw = raw.get("splits")
-    if not isinstance(splits_raw, dict) or set(splits_raw) != set(BOARD_TYPES):
-        fail("splits", f"a mapping with keys {', '.join(BOARD_TYPES)}", splits_raw)
+    if not isinstance(splits_raw, dict) or set(splits_raw) != set(SECTIONS):
+        fail("splits", f"a mapping with keys {', '.join(SECTIONS)}", splits_raw)
     splits: dict[str, dict[str, SplitSpec]] = {}
-    for bt in BOARD_TYPES:
+    for bt in SECTIONS:
         per = splits_raw[bt]
         if not isinstance(per, dict) or set(per) != set(SPLITS):
-            fail(f"splits.{bt}", "a mapping with keys train, val, test", per)
+            fail(f"splits.{bt}", f"a mapping with keys {', '.join(SPLITS)}", per)
         splits[bt] = {}
         used: set[str] = set()
         for split in SPLITS:
@@ -110,7 +111,7 @@ def parse_config(raw: Any, path: str = "<config>") -> Config:
             size = spec["size"]
             if type(size) is not int or size < 0:
                 fail(f"{field}.size", "a non-negative integer", size)
-            if bt == "simple_simple":
+            if bt == SIMPLE.key:
                 quadrants = names(f"{field}.quadrants", spec.get("quadrants"), QUADRANTS)
                 if used & set(quadrants):
                     fail(f"{field}.quadrants", "quadrants that no other split uses", list(quadrants))

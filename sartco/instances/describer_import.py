@@ -26,13 +26,12 @@ import json
 from collections import Counter, defaultdict
 from pathlib import Path
 
+from sartco.dataset import BOARD_KINDS, DESCRIBED_TASK, INSTRUCTION_STYLE, board_kind
 from sartco.errors import UserError
 
-from .generate import FORMAT, dumps
+from .storage import FORMAT, dumps, make_folder
 
 GAME = "cobot_describe"
-STYLE = {"simple": "single_turn", "regular": "regular"}  # board_type -> instruction style
-FILE_ORDER = [("simple", "simple"), ("regular", "simple"), ("regular", "complex")]
 
 
 def _read_json(path: Path):
@@ -91,7 +90,8 @@ def collect(results: Path) -> tuple[dict[str, dict], list[dict], dict]:
             defects.append(_defect("duplicate", episode, results, "this model already described this board; first kept",
                                    model=model, board=record["id"]))
             continue
-        merged["instructions"][model] = {STYLE[record["board_type"]]: said["text"]}
+        style = INSTRUCTION_STYLE[DESCRIBED_TASK[record["board_type"]]]  # single_turn | regular
+        merged["instructions"][model] = {style: said["text"]}
         prov = merged["provenance"]
         if prov.get("source") != "describer":
             merged["provenance"] = prov = {"source": "describer", "record": prov, "episodes": {}}
@@ -110,14 +110,14 @@ def import_instructions(results: Path, out: Path, version: str) -> dict:
         raise UserError(f"-r {results}: no describer instructions in {info['episodes']} {GAME} episodes "
                         f"({', '.join(f'{n} {k}' for k, n in sorted(kinds.items()))})")
     files: dict[str, list[dict]] = defaultdict(list)
+    order = {}  # file name -> (board kind, name): the kinds in their order, a kind's splits by name
     for record in records.values():
-        files[f"{record['board_type']}_{record['object_type']}_{record['split']}.json"].append(record)
-    order = {f"{b}_{o}": i for i, (b, o) in enumerate(FILE_ORDER)}
-    names = sorted(files, key=lambda n: (order.get(n.rsplit("_", 1)[0], 99), n))
-    try:
-        out.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise UserError(f"--out {out}: cannot create the folder: {exc.strerror}") from None
+        kind = board_kind(record["board_type"], record["object_type"])
+        name = kind.dataset_file(record["split"])
+        files[name].append(record)
+        order[name] = (BOARD_KINDS.index(kind), name)
+    names = sorted(files, key=order.__getitem__)
+    make_folder(out)
     for name in names:
         (out / name).write_text(dumps(sorted(files[name], key=lambda r: r["id"])), encoding="utf-8")
     sources = Counter(m for r in records.values() for m in r["provenance"]["episodes"])

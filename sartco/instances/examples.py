@@ -11,11 +11,13 @@ from __future__ import annotations
 import random
 from typing import Iterable
 
+from sartco.dataset import SIMPLE
+
 MAX_EXAMPLES = 10
 
 
 def location(record: dict) -> tuple:
-    if record["board_type"] == "simple":
+    if record["board_type"] == SIMPLE.board:
         p = record["placement"]
         return ("cell", p["x"][0], p["y"][0])
     return ("arrangement", record["arrangement"])

@@ -16,63 +16,20 @@ No board is in two splits.
 """
 from __future__ import annotations
 
-import json
 import random
 import time
 from collections import defaultdict
 from pathlib import Path
 from typing import Any, Callable
 
-from sartco.errors import UserError
+from sartco.dataset import BOARD_KINDS, RECORD_KEYS, SIMPLE, SPLITS, BoardKind, BoardRecord
 
 from .arrangements import anchors
-from .config import BOARD_TYPES, SPLITS, Config, load_config
+from .boards import anchors_in_quadrant, regular_record, simple_record
+from .config import Config, load_config
+from .gold_code import check_dataset
 from .objects import ObjectSpec, enumerate_objects
-from .records import anchors_in_quadrant, regular_record, simple_record
-
-FORMAT = "sartco-dataset/1"
-KEY_ORDER = ("id", "board_type", "object_type", "split", "combo_name", "shapes", "colors", "quadrant",
-             "rows", "cols", "seed", "arrangement", "placement", "occupied_rows", "occupied_cols",
-             "target", "code", "instructions", "provenance")
-
-
-def dumps(obj: Any) -> str:
-    return json.dumps(obj, indent=1, ensure_ascii=False, sort_keys=False) + "\n"
-
-
-def dumps_records(records: list[dict]) -> str:
-    """A JSON list with one compact record per line: the same data as indent=1 at a third of the
-    size (the generated train splits are large), still diff-friendly record by record."""
-    if not records:
-        return "[]\n"
-    return "[\n" + ",\n".join(json.dumps(r, ensure_ascii=False, sort_keys=False) for r in records) + "\n]\n"
-
-
-def load_dataset(folder: str | Path) -> tuple[dict, dict[str, list[dict]]]:
-    """The manifest and the records by file name of one dataset folder (the files its manifest lists)."""
-    folder = Path(folder)
-    manifest_file = folder / "manifest.json"
-    if not manifest_file.is_file():
-        raise UserError(f"{manifest_file}: no dataset manifest (expected a folder written by `sartco generate` "
-                        f"or `sartco import`)")
-    manifest = _read_json(manifest_file)
-    listed = manifest.get("files") if isinstance(manifest, dict) else None
-    if not isinstance(listed, dict):
-        raise UserError(f"{manifest_file}: no \"files\" object (not a dataset manifest)")
-    files = {}
-    for name in listed:
-        if not (folder / name).is_file():
-            raise UserError(f"{folder / name}: listed in the manifest but missing")
-        files[name] = _read_json(folder / name)
-    return manifest, files
-
-
-def _read_json(path: Path):
-    try:
-        return json.loads(path.read_text(encoding="utf-8"))
-    except (ValueError, OSError) as exc:
-        raise UserError(f"{path}: not readable as JSON ({exc})") from None
-
+from .storage import FORMAT, dumps, dumps_records, make_folder, shared_boards
 
 def _draw(pool: list, used: set, key: Callable[[Any], Any], rng: random.Random):
     """A random element of pool whose key is not used yet, or None."""
@@ -102,16 +59,16 @@ def _balanced(n: int, combos: list[str], draw: Callable[[str], Any], rng: random
     return chosen
 
 
-def _finish(records: list[dict], board_type: str, object_type: str, split: str) -> list[dict]:
+def _finish(records: list[dict], kind: BoardKind, split: str) -> list[BoardRecord]:
     records.sort(key=lambda r: (len(r["combo_name"]), r["combo_name"]))  # stable: draw order within
     out = []
     for i, r in enumerate(records):
-        r = dict(r, id=f"{board_type}_{object_type}_{split}_{i:04d}", split=split)
-        out.append({k: r[k] for k in KEY_ORDER})
+        r = dict(r, id=f"{kind.key}_{split}_{i:04d}", split=split)
+        out.append({k: r[k] for k in RECORD_KEYS})
     return out
 
 
-def simple_boards(config: Config, objects: tuple[ObjectSpec, ...], rng: random.Random) -> dict[str, list[dict]]:
+def simple_boards(config: Config, objects: tuple[ObjectSpec, ...], rng: random.Random) -> dict[str, list[BoardRecord]]:
     by_combo: dict[str, list[tuple[int, int]]] = defaultdict(list)
     for oi, obj in enumerate(objects):
         by_combo[obj.combo].extend((oi, ci) for ci in range(len(obj.colorings)))
@@ -119,7 +76,7 @@ def simple_boards(config: Config, objects: tuple[ObjectSpec, ...], rng: random.R
     used: set = set()
     files = {}
     for split in SPLITS:
-        spec = config.splits["simple_simple"][split]
+        spec = config.splits[SIMPLE.key][split]
         # a board: (object, colouring, quadrant); the quadrants of the splits are disjoint
         pools = {c: [(oi, ci, q) for q in spec.quadrants for oi, ci in by_combo[c]] for c in combos}
 
@@ -134,7 +91,7 @@ def simple_boards(config: Config, objects: tuple[ObjectSpec, ...], rng: random.R
             obj = objects[oi]
             x, y = rng.choice(anchors_in_quadrant(obj, q))
             records.append(simple_record(obj, obj.colorings[ci], q, x, y))
-        files[f"simple_simple_{split}.json"] = _finish(records, "simple", "simple", split)
+        files[SIMPLE.dataset_file(split)] = _finish(records, SIMPLE, split)
     return files
 
 
@@ -149,9 +106,8 @@ def regular_pools(arrangement_names, objects) -> dict[str, dict[str, list[tuple[
     return pools
 
 
-def regular_boards(config: Config, board_type: str, objects, rng: random.Random) -> dict[str, list[dict]]:
-    object_type = board_type.split("_")[1]
-    names = config.arrangements[board_type]
+def regular_boards(config: Config, kind: BoardKind, objects, rng: random.Random) -> dict[str, list[BoardRecord]]:
+    names = config.arrangements[kind.key]
     pools = regular_pools(names, objects)
     flat = {(c, a): [(oi, ci) for oi in ois for ci in range(len(objects[oi].colorings))]
             for c, per in pools.items() for a, ois in per.items()}
@@ -159,7 +115,7 @@ def regular_boards(config: Config, board_type: str, objects, rng: random.Random)
     used: set = set()
     files = {}
     for split in SPLITS:
-        spec = config.splits[board_type][split]
+        spec = config.splits[kind.key][split]
         cycles = {}
         for c in combos:
             arrs = [a for a in names if a in pools[c]]
@@ -180,39 +136,37 @@ def regular_boards(config: Config, board_type: str, objects, rng: random.Random)
         records = []
         for a, oi, ci in _balanced(spec.size, combos, draw, rng):
             obj = objects[oi]
-            records.append(regular_record(obj, obj.colorings[ci], a, anchors(a, obj), object_type))
-        files[f"{board_type}_{split}.json"] = _finish(records, "regular", object_type, split)
+            records.append(regular_record(obj, obj.colorings[ci], a, anchors(a, obj), kind.object))
+        files[kind.dataset_file(split)] = _finish(records, kind, split)
     return files
 
 
-def build_dataset(config: Config, seed: int) -> dict[str, list[dict]]:
+def build_dataset(config: Config, seed: int) -> dict[str, list[BoardRecord]]:
     """File name -> records. Deterministic for (config, seed)."""
     rng = random.Random(seed)
     objects = enumerate_objects(config.seeds, config.colors)
-    files: dict[str, list[dict]] = {}
-    for board_type in BOARD_TYPES:
-        child = random.Random(rng.getrandbits(64))  # one stream per board type, drawn in order
-        if board_type == "simple_simple":
+    files: dict[str, list[BoardRecord]] = {}
+    for kind in BOARD_KINDS:
+        child = random.Random(rng.getrandbits(64))  # one stream per board kind, drawn in order
+        if kind == SIMPLE:
             files.update(simple_boards(config, objects, child))
         else:
-            files.update(regular_boards(config, board_type, objects, child))
+            files.update(regular_boards(config, kind, objects, child))
     _check_disjoint(files)
     return files
 
 
-def _check_disjoint(files: dict[str, list[dict]]) -> None:
-    """No board (target) in two splits of one board type, nor twice in one split."""
-    seen: dict[str, str] = {}
-    for name, records in files.items():
-        kind = name.rsplit("_", 1)[0]
-        for r in records:
-            key = kind + json.dumps(r["target"])
-            if key in seen:
-                raise AssertionError(f"board {r['id']} of {name} repeats a board of {seen[key]}")
-            seen[key] = name
+def _check_disjoint(files: dict[str, list[BoardRecord]]) -> None:
+    """No board (target) in two splits of one board kind nor twice in one split (a regular board
+    of simple objects may also be one of complex objects)."""
+    for kind in BOARD_KINDS:
+        overlaps = shared_boards({name: files[name] for name in map(kind.dataset_file, SPLITS) if name in files})
+        if overlaps:
+            (first_file, first_id), (file, rid) = overlaps[0][:2]
+            raise AssertionError(f"board {rid} of {file} repeats a board of {first_file} ({first_id})")
 
 
-def manifest(config: Config, seed: int, files: dict[str, list[dict]]) -> dict[str, Any]:
+def manifest(config: Config, seed: int, files: dict[str, list[BoardRecord]]) -> dict[str, Any]:
     return {"format": FORMAT, "version": config.version, "source": "generated", "seed": seed,
             "config": config.raw, "files": {name: len(records) for name, records in files.items()},
             "defects": []}
@@ -221,7 +175,7 @@ def manifest(config: Config, seed: int, files: dict[str, list[dict]]) -> dict[st
 def write_dataset(config: Config, seed: int, out: str | Path) -> dict[str, int]:
     out = Path(out)
     files = build_dataset(config, seed)
-    out.mkdir(parents=True, exist_ok=True)
+    make_folder(out)
     (out / "manifest.json").write_text(dumps(manifest(config, seed, files)), encoding="utf-8")
     for name, records in files.items():
         (out / name).write_text(dumps_records(records), encoding="utf-8")
@@ -245,7 +199,6 @@ def run(args) -> int:
         print(f"{args.out}/{name}: {n} boards")
     print(f"generated {sum(counts.values())} boards in {took:.1f} s")
     if args.check:
-        from .check import check_dataset
         problems = check_dataset(args.out)
         for p in problems[:20]:
             print(p)

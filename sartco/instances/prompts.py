@@ -23,7 +23,7 @@ from __future__ import annotations
 
 from typing import Iterable
 
-from sartco.dataset import INSTRUCTION_STYLE, TASKS
+from sartco.dataset import INSTRUCTION_STYLE, SIMPLE, TASKS
 from sartco.world import COLORS, MAX_DEPTH, SHAPES
 from sartco.world.render import grid_explanation, grid_text
 
@@ -38,7 +38,7 @@ LABELS = {"first_order": ("Output",), "sequence_function": ("Function", "Usage")
 def _check_task(record: dict, task: str) -> None:
     if task not in TASKS:
         raise ValueError(f"unknown task {task!r}; expected one of {', '.join(TASKS)}")
-    regular = record["board_type"] == "regular"
+    regular = record["board_type"] != SIMPLE.board
     if regular != (task == "repetition"):
         raise ValueError(f"task {task!r} does not fit a {record['board_type']} board ({record['id']})")
 
@@ -132,4 +132,4 @@ def describer_prompt(record: dict) -> str:
                   environment=_environment(record["rows"], record["cols"]), name=record["combo_name"],
                   grid=grid_text(cells, record["rows"], record["cols"]),
                   explanation=grid_explanation(cells),
-                  regular=record["board_type"] == "regular").strip() + "\n"
+                  regular=record["board_type"] != SIMPLE.board).strip() + "\n"

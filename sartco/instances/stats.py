@@ -11,10 +11,12 @@ import json
 from collections import Counter, defaultdict
 from typing import Any
 
+from sartco.dataset import REGULAR_COMPLEX, REGULAR_SIMPLE, SIMPLE
+
 from .arrangements import anchors
+from .boards import anchors_in_quadrant
 from .config import QUADRANTS, Config, load_config
 from .objects import enumerate_objects
-from .records import anchors_in_quadrant
 
 
 def table(config: Config) -> dict[str, Any]:
@@ -32,8 +34,8 @@ def table(config: Config) -> dict[str, Any]:
     by_size = Counter(len(c) for c in combos)
     simple = sum(len(o.colorings) for o in objects for q in QUADRANTS if anchors_in_quadrant(o, q))
     arrangements: dict[str, dict[str, int]] = {}
-    boards = {"simple_simple": simple}
-    for board_type in ("regular_simple", "regular_complex"):
+    boards = {SIMPLE.key: simple}
+    for board_type in (REGULAR_SIMPLE.key, REGULAR_COMPLEX.key):
         total = 0
         for name in config.arrangements[board_type]:
             ok = [o for o in objects if anchors(name, o) is not None]

@@ -25,36 +25,26 @@ PaperEpisode.to_json():
   mock_answers   per turn the gold answer in the authors' answer format ("Output\n<code>\n" or
                  "Function\n<function>\n\nUsage\n<usage>\n"); read_answer gives back the gold code
 
-In-context examples (5): candidates are the turns of the training samples with the test sample's
-number of components and another combination (regular boards: another seed_template), in file
-order, as (instruction, code) of the training variant (single_turn_hai/_mg -> single_turn,
-single_turn_hai_sc -> single_turn_sc, regular_hai/_mg -> regular); random.seed("42") then
-random.sample(candidates, 5). rb_so takes them from the published rb_so_train.json; sb_so and
-rb_cho (whose training files were never published) from our generated train split
-(instances/v1 by default), converted to the same candidate form.
+In-context examples: sartco.paper.examples.
 """
 from __future__ import annotations
 
-import json
-import random
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict, dataclass
 from functools import lru_cache
 from pathlib import Path
 from string import Template
-from typing import Any, Iterable
+from typing import Iterable
 
+from sartco.dataset import REGULAR_SIMPLE, PublishedName
 from sartco.errors import UserError
-from sartco.instances.generate import load_dataset
-from sartco.instances.prompts import instruction_text
-from sartco.program.gold import DEFAULT_DATA, base_of, samples
+from sartco.published.files import PUBLISHED, gold_boards, read_samples
+from sartco.published.samples import template_stem
 
-from .vocabulary import (INSTRUCTION_LABEL, LABELS, PROTOCOL, VARIANTS, PublishedFile, published_test_files,
-                         template_name, training_stem, variants_of)
+from .examples import Pools, editor_code
+from .vocabulary import INSTRUCTION_LABEL, LABELS, PROTOCOL, VARIANTS, published_test_files, template_name, variants_of
 
-DEFAULT_PUBLISHED = DEFAULT_DATA / "published"
+DEFAULT_PUBLISHED = PUBLISHED
 DEFAULT_GENERATED = Path(__file__).resolve().parents[2] / "instances" / "v1"
-N_EXAMPLES = 5
-EXAMPLE_SEED = "42"
 
 
 @dataclass(frozen=True, slots=True)
@@ -80,7 +70,7 @@ class PaperEpisode:
         return cls(**{k: data[k] for k in cls.__dataclass_fields__ if k in data})
 
 
-# ----------------------------------------------------------------------------- answers and examples
+# ----------------------------------------------------------------------------- answers
 
 def labelled(code: dict, family: str) -> str:
     """A turn's code under the authors' labels, as in the examples block (and the mock answer):
@@ -100,15 +90,6 @@ def examples_block(candidates: Iterable[dict], family: str) -> str:
     return "\n".join(f"{INSTRUCTION_LABEL}\n{c['text']}\n\n{labelled(c['code'], family)}" for c in candidates)
 
 
-def editor_code(editor: Any, family: str) -> dict:
-    """The code of one dialogue turn's <Editor> as the family's answer keys."""
-    if family == "multi_turn":
-        return {"output": editor}
-    if family == "single_turn":
-        return {"function": editor["function"], "usage": editor["usage"]}
-    return {"output": editor["output"]}
-
-
 def gold_of(code: dict, family: str) -> dict:
     """README "Scoring": single_turn's function key holds function + "\n" + usage."""
     if family == "single_turn":
@@ -116,129 +97,13 @@ def gold_of(code: dict, family: str) -> dict:
     return dict(code)
 
 
-@dataclass(frozen=True, slots=True)
-class TrainItem:
-    count: str
-    combo: str
-    seed: str | None           # regular boards: the seed_template stem; simple boards: None
-    turns: dict = field(default_factory=dict)   # training variant -> [{"text", "code"}, ...]
-
-
-def _stem(path: str) -> str:
-    return Path(path).stem
-
-
-def published_pool(content: dict, family_of_training: dict[str, str]) -> list[TrainItem]:
-    """A published training file's samples as candidates, in file order."""
-    items = []
-    for board_type, sid, sample in samples(content):
-        _, _, count, combo, _ = sid.split("/")
-        turns = {}
-        for training, family in family_of_training.items():
-            dialogue = sample.get("dialogues", {}).get(training)
-            if dialogue:
-                turns[training] = [{"text": t["<Programmer>"], "code": editor_code(t["<Editor>"], family)}
-                                   for t in dialogue["instructions"]]
-        seed = _stem(sample["seed_template"]) if board_type == "regular" else None
-        items.append(TrainItem(count, combo, seed, turns))
-    return items
-
-
-def generated_pool(records: list[dict], family_of_training: dict[str, str]) -> list[TrainItem]:
-    """Our generated train records in the published candidate form and file order: by number of
-    components, then combination in order of first appearance, then records in list order."""
-    grouped: dict[int, dict[str, list[dict]]] = {}
-    for r in records:
-        grouped.setdefault(len(r["shapes"]), {}).setdefault(r["combo_name"], []).append(r)
-    items = []
-    for count in sorted(grouped):
-        for combo, group in grouped[count].items():
-            for r in group:
-                turns = {}
-                for training, family in family_of_training.items():
-                    task = VARIANTS[training].task
-                    code = r["code"][task]
-                    if family == "multi_turn":
-                        texts = instruction_text(r, task, "template")
-                        turns[training] = [{"text": t, "code": {"output": s}} for t, s in zip(texts, code["steps"])]
-                    elif family == "single_turn":
-                        turns[training] = [{"text": instruction_text(r, task, "template"),
-                                            "code": {"function": code["function"], "usage": code["usage"]}}]
-                    else:
-                        turns[training] = [{"text": instruction_text(r, task, "template"), "code": {"output": code["output"]}}]
-                seed = r["arrangement"] if r["board_type"] == "regular" else None
-                items.append(TrainItem(str(count), combo, seed, turns))
-    return items
-
-
-def candidates(pool: list[TrainItem], training: str, count: str, combo: str, seed: str | None) -> list[dict]:
-    """README: same number of components, another combination (regular: another seed_template),
-    every turn of the training variant's dialogue, in file order."""
-    return [turn for item in pool
-            if item.count == count and item.combo != combo and (seed is None or item.seed != seed)
-            for turn in item.turns.get(training, [])]
-
-
-def select(cands: list[dict], k: int = N_EXAMPLES) -> list[dict]:
-    """random.seed("42") immediately followed by random.sample(candidates, k)."""
-    if len(cands) < k:
-        raise UserError(f"only {len(cands)} in-context example candidates, {k} needed")
-    return random.Random(EXAMPLE_SEED).sample(cands, k)
-
-
-# ----------------------------------------------------------------------------- reading the data
-
-def _read(path: Path) -> Any:
-    try:
-        return json.loads(path.read_text(encoding="utf-8"))
-    except (OSError, ValueError) as exc:
-        raise UserError(f"{path}: not readable as JSON ({exc})") from None
-
+# ----------------------------------------------------------------------------- the episodes
 
 @lru_cache(maxsize=8)
 def _template(path: Path) -> Template:
     if not path.is_file():
         raise UserError(f"{path}: paper-protocol prompt template missing")
     return Template(path.read_text(encoding="utf-8"))
-
-
-class _Pools:
-    """The example pool of each board/object type, loaded once per build_episodes call."""
-
-    def __init__(self, published_dir: Path, generated_dir: Path):
-        self.published_dir, self.generated_dir = published_dir, generated_dir
-        self.pools: dict[str, tuple[list[TrainItem], str]] = {}
-        self.selected: dict[tuple, list[dict]] = {}
-
-    def pool(self, file: PublishedFile) -> tuple[list[TrainItem], str]:
-        if file.prefix not in self.pools:
-            families = {v.training: v.family for v in VARIANTS.values()
-                        if (v.family == "regular") == (file.board == "regular")}
-            path = self.published_dir / f"{training_stem(file.prefix)}.json"
-            if path.is_file():
-                where, origin, records = path.name, f"published {path.stem}", _read(path)
-                convert = published_pool
-            else:
-                manifest, files = load_dataset(self.generated_dir)
-                name = f"{file.board}_{file.object}_train.json"
-                if name not in files:
-                    raise UserError(f"{self.generated_dir}: no {name} (the train split that stands in for "
-                                    f"the unpublished {path.name})")
-                version = manifest.get("version", self.generated_dir.name)
-                where, records, convert = self.generated_dir / name, files[name], generated_pool
-                origin = f"generated {version} train split (the authors' {path.stem} was never published)"
-            try:
-                self.pools[file.prefix] = (convert(records, families), origin)
-            except (KeyError, TypeError, ValueError, AttributeError) as exc:
-                raise UserError(f"{where}: malformed training sample ({type(exc).__name__}: {exc})") from None
-        return self.pools[file.prefix]
-
-    def examples(self, file: PublishedFile, training, count, combo, seed) -> tuple[list[dict], str]:
-        pool, origin = self.pool(file)
-        key = (file.prefix, training, count, combo, seed)
-        if key not in self.selected:
-            self.selected[key] = select(candidates(pool, training, count, combo, seed))
-        return self.selected[key], origin
 
 
 def first_message(template: Template, sample: dict, variant: str, examples: list[dict], text: str) -> str:
@@ -270,22 +135,19 @@ def build_episodes(published_dir: Path = DEFAULT_PUBLISHED, generated_dir: Path 
         unknown = sorted(set(variants) - set(VARIANTS))
         if unknown:
             raise UserError(f"unknown variant(s) {', '.join(unknown)}; expected one of {', '.join(VARIANTS)}")
-    gold_dir = data_dir / "gold_boards"
-    gold_stems = sorted(p.stem for p in gold_dir.glob("*.json"))
-    pools = _Pools(published_dir, generated_dir)
+    pools = Pools(published_dir, generated_dir)
     episodes = []
     for file in known:
         if files is not None and file.stem not in files:
             continue
-        keys = [v for v in variants_of(file.board, file.source) if variants is None or v in variants]
+        keys = [v for v in variants_of(file.kind, file.source) if variants is None or v in variants]
         path = published_dir / f"{file.stem}.json"
         if not keys or not path.is_file():
             if files is not None and not path.is_file():
                 raise UserError(f"{path}: published test file missing")
             continue
-        base = base_of(file.stem, gold_stems)
-        boards = _read(gold_dir / f"{base}.json") if base else {}
-        for _, sid, sample in samples(_read(path)):
+        boards = gold_boards(data_dir / "gold_boards", path.name) or {}
+        for sid, sample in read_samples(path):
             for variant in keys:
                 try:
                     episodes.append(_episode(pools, data_dir, file, sid, sample, variant, boards.get(sid)))
@@ -294,20 +156,20 @@ def build_episodes(published_dir: Path = DEFAULT_PUBLISHED, generated_dir: Path 
     return episodes
 
 
-def _episode(pools: _Pools, data_dir: Path, file: PublishedFile, sid: str, sample: dict, variant: str,
+def _episode(pools: Pools, data_dir: Path, file: PublishedName, sid: str, sample: dict, variant: str,
              target: dict | None) -> PaperEpisode:
     v = VARIANTS[variant]
     turns = sample["dialogues"][variant]["instructions"]
     texts = [t["<Programmer>"] for t in turns]
     codes = [editor_code(t["<Editor>"], v.family) for t in turns]
     _, _, count, combo, _ = sid.split("/")
-    seed = _stem(sample["seed_template"]) if file.board == "regular" else None
+    seed = template_stem(sample["seed_template"]) if file.kind.board == REGULAR_SIMPLE.board else None
     examples, origin = pools.examples(file, v.training, count, combo, seed)
     template = _template(data_dir / "paper-protocol" / template_name(variant))
     messages = [first_message(template, sample, variant, examples, texts[0])] + [instruction(t) for t in texts[1:]]
     return PaperEpisode(
         id=f"{file.stem}/{sid}/{variant}", file=file.stem, sample=sid, variant=variant,
-        cell={"instructions": v.instructions, "board": file.board, "object": file.object, "task": v.task,
+        cell={"instructions": v.instructions, "board": file.kind.board, "object": file.kind.object, "task": v.task,
               "source": file.source},
         messages=messages, gold=[gold_of(c, v.family) for c in codes],
         given_function=sample["code"]["function"] if v.family == "regular" else "",

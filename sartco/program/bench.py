@@ -1,6 +1,6 @@
 """`sartco bench-execute`: throughput of `sartco execute` on the gold corpus against bare compile().
 
-All gold programs of ../shared/sartco-data/published (see gold.py: every total_code, every
+All gold programs of ../shared/sartco-data/published (see sartco.published.gold: every total_code, every
 dialogue editor, multi-turn dialogues cumulatively) go through `serve()`, the same JSON-lines
 handler as `sartco execute` (in-process, bytes in, bytes out, with the gold board as target so
 the comparison is paid for too), budgets on. In the same run the same sources go through bare
@@ -30,10 +30,11 @@ import os
 import time
 from pathlib import Path
 
+from sartco.dataset import SHARED_DATA as DEFAULT_DATA
 from sartco.errors import UserError
+from sartco.published.gold import gold_programs
 
 from .cli import serve
-from .gold import DEFAULT_DATA, gold_programs
 from . import pool
 from .pool import default_workers, execute_many, shutdown
 

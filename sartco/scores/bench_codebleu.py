@@ -18,6 +18,8 @@ import statistics
 import time
 from pathlib import Path
 
+from sartco.dataset import BOARD_KINDS, SPLITS
+
 from . import metrics
 from .metrics import LANG, WEIGHTS, code_bleu
 
@@ -41,7 +43,10 @@ def main(argv: list[str] | None = None) -> int:
     from codebleu import calc_codebleu
 
     programs = []
-    for path in sorted(args.dataset.glob("*_*_*.json")):
+    for name in sorted(kind.dataset_file(split) for kind in BOARD_KINDS for split in SPLITS):
+        path = args.dataset / name
+        if not path.is_file():
+            continue
         for record in json.loads(path.read_text()):
             programs += [code["total_code"] for code in record["code"].values()]
     if not programs:

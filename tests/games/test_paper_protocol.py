@@ -7,7 +7,7 @@ import pytest
 
 from sartco.clem.paper import experiment_fields, instance_fields
 from sartco.clem.transcript import display
-from sartco.program.gold import DEFAULT_DATA
+from sartco.dataset import SHARED_DATA as DEFAULT_DATA
 
 pytestmark = pytest.mark.skipif(not (DEFAULT_DATA / "published").is_dir(), reason="shared data missing")
 

@@ -6,7 +6,7 @@ from collections import Counter
 
 import pytest
 
-from sartco.instances.check import check_records
+from sartco.instances.gold_code import check_records
 from sartco.instances.generate import write_dataset
 from sartco.instances.objects import enumerate_objects
 

@@ -9,7 +9,7 @@ import pytest
 
 from sartco.instances.arrangements import anchors
 from sartco.instances.objects import enumerate_objects
-from sartco.instances.records import regular_record, simple_record
+from sartco.instances.boards import regular_record, simple_record
 from sartco.program import execute
 
 PUBLISHED = __import__("pathlib").Path(__file__).resolve().parents[3] / "shared" / "sartco-data" / "published"

@@ -4,7 +4,8 @@ from collections import Counter
 import pytest
 
 from sartco.program import execute_many
-from sartco.program.gold import DEFAULT_DATA, gold_programs
+from sartco.dataset import SHARED_DATA as DEFAULT_DATA
+from sartco.published.gold import gold_programs
 
 pytestmark = pytest.mark.skipif(not (DEFAULT_DATA / "published").is_dir(), reason="shared data missing")
 

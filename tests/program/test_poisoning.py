@@ -22,7 +22,8 @@ import time
 import pytest
 
 from sartco.program import execute, execute_many, pool, shutdown
-from sartco.program.gold import DEFAULT_DATA, gold_programs
+from sartco.dataset import SHARED_DATA as DEFAULT_DATA
+from sartco.published.gold import gold_programs
 from sartco.world import ErrorCode
 
 pytestmark = pytest.mark.skipif(not (DEFAULT_DATA / "published").is_dir(), reason="shared data missing")

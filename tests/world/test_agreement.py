@@ -7,7 +7,8 @@ from pathlib import Path
 
 import pytest
 
-from sartco.program.gold import DEFAULT_DATA, samples
+from sartco.dataset import SHARED_DATA as DEFAULT_DATA
+from sartco.published.files import read_samples
 
 REPO = Path(__file__).resolve().parents[2]
 _spec = importlib.util.spec_from_file_location("world_agreement", REPO / "tools" / "world_agreement.py")
@@ -21,7 +22,7 @@ def test_the_model_builds_the_authors_gold_boards():
     n = 0
     for stem in world_agreement.PUBLISHED:
         gold = json.loads((DEFAULT_DATA / "gold_boards" / f"{stem}.json").read_text())
-        for _, sid, sample in samples(json.loads((DEFAULT_DATA / "published" / f"{stem}.json").read_text())):
+        for sid, sample in read_samples(DEFAULT_DATA / "published" / f"{stem}.json"):
             board = world_agreement.AuthorsBoard()
             for p in world_agreement.parse_puts(sample["code"]["multi_turn"]["output"]):
                 board.put(*p)

@@ -1,9 +1,11 @@
-"""Board records (docs/ARCHITECTURE.md): the code in the paper's styles and the template
-instructions of one board, all rendered from resources/templates."""
+"""Generated board records (sartco.dataset.BoardRecord, without id and split until generate adds
+them): the code in the paper's styles and the template instructions of one board, all rendered
+from resources/templates."""
 from __future__ import annotations
 
 from typing import Any
 
+from sartco.dataset import REGULAR_SIMPLE, SIMPLE
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
 
 from .arrangements import arrangement, instruction, output_code
@@ -43,7 +45,7 @@ def simple_record(obj: ObjectSpec, colors, quadrant: str, x: int, y: int) -> dic
     opt_function = optimal_function(obj)
     opt_usage = render("code/optimal_usage.j2", name=name, colors=colors, x=x, y=y).strip()
     return {
-        "board_type": "simple", "object_type": "simple",
+        "board_type": SIMPLE.board, "object_type": SIMPLE.object,
         "combo_name": name, "shapes": list(obj.shapes), "colors": colors,
         "quadrant": quadrant, "rows": DEFAULT_ROWS, "cols": DEFAULT_COLS,
         "seed": obj.seed, "arrangement": None,
@@ -75,7 +77,7 @@ def regular_record(obj: ObjectSpec, colors, arrangement_name: str, anchors, obje
     function = optimal_function(obj)
     output = output_code(arr, name, colors, obj)
     return {
-        "board_type": "regular", "object_type": object_type,
+        "board_type": REGULAR_SIMPLE.board, "object_type": object_type,
         "combo_name": name, "shapes": list(obj.shapes), "colors": colors,
         "quadrant": "tl", "rows": DEFAULT_ROWS, "cols": DEFAULT_COLS,
         "seed": obj.seed, "arrangement": arrangement_name,

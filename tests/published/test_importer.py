@@ -4,17 +4,14 @@ from __future__ import annotations
 import json
 import shutil
 from collections import Counter
-from pathlib import Path
 
 import pytest
 
 from sartco.cli import main
-from sartco.instances import importer
 from sartco.program import execute_many
-
-SHARED = Path(__file__).resolve().parents[2].parent / "shared" / "sartco-data"
-PUBLISHED = SHARED / "published"
-GOLD = SHARED / "gold_boards"
+from sartco.published import importer
+from sartco.published.files import GOLD_BOARDS as GOLD
+from sartco.published.files import PUBLISHED
 
 pytestmark = pytest.mark.skipif(not PUBLISHED.is_dir(), reason=f"published SARTCo data not found at {PUBLISHED}")
 
@@ -227,24 +224,6 @@ def test_any_missing_or_retyped_field_is_a_defect_not_a_traceback(tmp_path, key)
     (src / "sb_so_test_hc.json").write_text(json.dumps(variant))
     manifest = importer.import_published(src, tmp_path / "out", GOLD)
     assert manifest["files"]["simple_simple_test.json"] >= 128
-
-
-@pytest.mark.parametrize("text, junk", [
-    ("erere", True), ("rererer", True), ("   ", True), ("asdf qwer zxcv", True), ("Place it.", True),
-    ("Fill the 4th column with ns objects.", False), ("Place a red washer in row 3.", False),
-    ("Put bw objects on the diagonal", False),
-])
-def test_junk_rule(text, junk):
-    assert importer.is_junk(text) is junk
-
-
-@pytest.mark.parametrize("text, cleaned", [
-    ("s: Place a red washer.", "Place a red washer."), ("s Place a red washer.", "Place a red washer."),
-    (": Place a red washer.", "Place a red washer."), ("Place a red washer.", "Place a red washer."),
-    ("screws go on top.", "screws go on top."),
-])
-def test_prefix_rule(text, cleaned):
-    assert importer.PREFIX_RE.sub("", text, count=1) == cleaned
 
 
 def test_an_out_path_that_is_a_file_is_a_user_error(tmp_path, capsys):

@@ -14,13 +14,13 @@ A variant file (`sb_so_test_hc.json`, ...) takes its targets from its base file'
 """
 from __future__ import annotations
 
-import json
 from pathlib import Path
 from typing import Iterator, NamedTuple
 
+from sartco.dataset import SHARED_DATA, SIMPLE
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
 
-from sartco.dataset import SHARED_DATA as DEFAULT_DATA
+from .files import gold_boards, name_of, read_samples
 
 
 class GoldProgram(NamedTuple):
@@ -31,40 +31,20 @@ class GoldProgram(NamedTuple):
     target: dict | None
 
 
-def base_of(stem: str, gold_stems) -> str | None:
-    matches = [g for g in gold_stems if stem == g or stem.startswith(g + "_")]
-    return max(matches, key=len) if matches else None
-
-
-def samples(content: dict) -> Iterator[tuple[str, str, dict]]:
-    """(board type, sample id, sample) of one published file's content, in file order."""
-    for board_type, by_object in content.items():
-        for object_type, by_count in by_object.items():
-            for count, by_combo in by_count.items():
-                for combo, items in by_combo.items():
-                    for index, sample in enumerate(items):
-                        yield board_type, f"{board_type}/{object_type}/{count}/{combo}/{index}", sample
-
-
-def gold_programs(data: Path = DEFAULT_DATA) -> Iterator[GoldProgram]:
+def gold_programs(data: Path = SHARED_DATA) -> Iterator[GoldProgram]:
     data = Path(data)
-    gold_dir = data / "gold_boards"
-    gold_stems = sorted(p.stem for p in gold_dir.glob("*.json"))
-    boards_cache: dict[str, dict] = {}
     for path in sorted((data / "published").glob("*.json")):
-        base = base_of(path.stem, gold_stems)
-        if base is not None and base not in boards_cache:
-            boards_cache[base] = json.loads((gold_dir / f"{base}.json").read_text())
-        boards = boards_cache.get(base, {})
-        for board_type, sid, sample in samples(json.loads(path.read_text())):
+        boards = gold_boards(data / "gold_boards", path.name) or {}
+        simple = name_of(path.name).kind.board == SIMPLE.board
+        for sid, sample in read_samples(path):
             target = boards.get(sid)
-            for kind, code in _programs(board_type, sample):
+            for kind, code in _programs(simple, sample):
                 yield GoldProgram(path.stem, sid, kind, code, target)
 
 
-def _programs(board_type: str, sample: dict):
+def _programs(simple: bool, sample: dict):
     code = sample["code"]
-    if board_type == "simple":
+    if simple:
         for style in ("multi_turn", "single_turn", "single_turn_sc"):
             yield f"code.{style}", code[style]["total_code"]
     else:
