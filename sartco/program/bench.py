@@ -32,7 +32,7 @@ from pathlib import Path
 
 from sartco.errors import UserError
 
-from .cli import serve
+from .serve import serve
 from .gold import DEFAULT_DATA, gold_programs
 from . import pool
 from .pool import default_workers, execute_many, shutdown

@@ -86,7 +86,7 @@ def _resident_meter():
 def main(parent: int = 0) -> int:
     from . import runtime
     from .lines import encode, finish, parse_line
-    from .records import Limits
+    from .execution import Limits
     from .runtime import compile_program, run
 
     _die_with_parent(parent)
