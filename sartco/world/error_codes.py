@@ -1,4 +1,5 @@
-"""The one vocabulary of failures: the paper's error taxonomy plus the sandbox's own codes.
+"""The one vocabulary of failures: the paper's error taxonomy plus the sandbox's own codes, their
+families (ErrorCode.family, category_family) and WorldError, what put/init_board raise.
 
 World errors never import clemcore; the game masters translate them in one place.
 """
