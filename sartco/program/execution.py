@@ -23,7 +23,7 @@ class Limits:
     wall_time   seconds per program, enforced by killing the worker process (catches loops
                 inside C code that no Python-level counter sees); in a batch, the first
                 program of each chunk shares it with compiling the chunk ahead (at most a
-                tenth of it; a kill there reruns the chunk program by program, see pool.py)
+                tenth of it; a kill there reruns the chunk program by program, see driver.py)
     memory      bytes of address space the worker may add (RLIMIT_AS)
     source      characters of source text
     """

@@ -72,7 +72,7 @@ def default_workers() -> int:
 
 def dispatch(mode: str, items: list[bytes], keys: list | None, rows: int, cols: int, limits: Limits,
              workers: int | None = None, cache: bool = True) -> list:
-    """Run items on the workers; answers in input order (see Worker.run). Items with equal
+    """Run items on the workers; answers in input order (see driver.Worker.run). Items with equal
     keys go to the same worker, so its code cache sees every repeat of a source; without keys
     (no cache to serve) the shares are balanced by size, since a program's cost grows with its
     text (parsing and compiling are most of it), so that no worker waits idle for the other."""

@@ -59,7 +59,7 @@ def _limit(kind, soft):
 
 
 def _die_with_parent(parent: int) -> None:
-    """SIGKILL when the thread that started this worker (pool.py's spawner) ends."""
+    """SIGKILL when the thread that started this worker (driver.py's spawner) ends."""
     import ctypes
     import signal
 
