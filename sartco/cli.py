@@ -10,8 +10,8 @@ import sys
 from sartco.errors import UserError
 
 COMMANDS = {
-    "execute": ("sartco.program.cli", "run programs from JSON lines on stdin in the sandbox"),
-    "bench-execute": ("sartco.program.bench", "throughput of `sartco execute` against bare compile()"),
+    "execute": ("sartco.program.serve", "run programs from JSON lines on stdin in the sandbox"),
+    "bench-execute": ("sartco.bench_execute", "throughput of `sartco execute` against bare compile()"),
     "generate": ("sartco.instances.generate", "write a dataset version from a YAML config and a seed"),
     "stats": ("sartco.instances.stats", "table 1 of the paper, computed by enumeration"),
     "import": ("sartco.published.importer", "convert the published SARTCo files into the dataset format"),

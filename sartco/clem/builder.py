@@ -17,6 +17,8 @@ from typing import Callable, Sequence
 
 from clemcore.clemgame import Player
 
+from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
+
 RULEBASED = "rulebased"  # the model name of the rule-based follower
 
 
@@ -73,7 +75,8 @@ def terminal_answer(context: dict | None, what: str) -> str:
     return "\n".join(lines)
 
 
-def rulebased_code(instructions, task: str, given_code: str = "", rows: int = 8, cols: int = 8) -> str:
+def rulebased_code(instructions, task: str, given_code: str = "", rows: int = DEFAULT_ROWS,
+                   cols: int = DEFAULT_COLS) -> str:
     """What the rule-based follower writes for instructions (a text or a list of texts); a
     Python comment saying why when it cannot read them (it then builds nothing), never an error."""
     from sartco.follower import FollowError, follow

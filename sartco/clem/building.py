@@ -10,10 +10,10 @@ from __future__ import annotations
 
 from dataclasses import asdict, dataclass, field, fields
 
-from sartco.world import ErrorCode
+from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, SUCCESS_CATEGORY, ErrorCode, category_family
 from sartco.world.render import differing_cells
 
-from .outcomes import SUCCESS_CATEGORY, family, set_attempts_outcome
+from .outcomes import set_attempts_outcome
 from .transcript import code_block, picture, text_block
 
 BUILD_KEY = "sartco_build"          # interactions.json key of the final build record
@@ -41,8 +41,8 @@ class BuildRecord:
     precision: float
     recall: float
     f1: float
-    rows: int = 8
-    cols: int = 8
+    rows: int = DEFAULT_ROWS
+    cols: int = DEFAULT_COLS
     turn_codes: list = field(default_factory=list)  # one entry per builder turn
 
     def to_json(self) -> dict:
@@ -55,7 +55,7 @@ class BuildRecord:
 
     @property
     def family(self) -> str:
-        return family(self.category)
+        return category_family(self.category)
 
     def summary(self) -> str:
         """One line for transcripts: what happened and where. Derived from the target too (cells
@@ -70,7 +70,8 @@ class BuildRecord:
                 f"cell P/R/F1 {self.precision:.2f}/{self.recall:.2f}/{self.f1:.2f}")
 
 
-def compose_program(builder_code: str, *, given_code: str = "", rows: int = 8, cols: int = 8) -> str:
+def compose_program(builder_code: str, *, given_code: str = "", rows: int = DEFAULT_ROWS,
+                    cols: int = DEFAULT_COLS) -> str:
     """The program executed for an episode: the given code (e.g. the object function of a
     repetition task), a fresh board, then the builder's code - the paper's total_code layout."""
     parts = [given_code.strip()] if given_code.strip() else []
@@ -79,20 +80,17 @@ def compose_program(builder_code: str, *, given_code: str = "", rows: int = 8, c
     return "\n".join(parts) + "\n"
 
 
-def build(builder_code: str, target: dict, *, given_code: str = "", rows: int = 8, cols: int = 8,
+def build(builder_code: str, target: dict, *, given_code: str = "", rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS,
           turn_codes: list[str] | None = None) -> BuildRecord:
     """Execute the builder's code on a fresh board and compare it with the target."""
-    from sartco.program import compare, execute  # the only place model-written code runs
+    from sartco.program import execute, judge  # the only place model-written code runs
 
     program = compose_program(builder_code, given_code=given_code, rows=rows, cols=cols)
     ex = execute(program, rows=rows, cols=cols)
-    cmp = compare(ex.cells, target)
+    cmp = judge(ex.ok, ex.error, ex.cells, target)
     error = None if ex.error is None else str(ErrorCode(ex.error))  # sartco.program: set whenever not ok
-    if not ex.ok:
-        category, es = error, 0
-    else:
-        es = int(cmp.es)
-        category = SUCCESS_CATEGORY if es else str(ErrorCode(cmp.category))  # es == (cmp.category is None)
+    es = int(cmp.es)
+    category = SUCCESS_CATEGORY if es else str(ErrorCode(cmp.category))  # the error unless the program ran
     return BuildRecord(
         builder_code=builder_code, program=program, ok=bool(ex.ok), error=error, message=ex.message or "",
         cells=ex.cells, target=target, puts=int(ex.puts), es=es, category=category,
@@ -102,7 +100,7 @@ def build(builder_code: str, target: dict, *, given_code: str = "", rows: int = 
 
 
 def parse_failure(target: dict, message: str, *, turn_codes: list[str] | None = None,
-                  rows: int = 8, cols: int = 8) -> BuildRecord:
+                  rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS) -> BuildRecord:
     """The record of an episode aborted because an answer held no code: nothing was executed."""
     code = "\n".join(turn_codes or [])
     return BuildRecord(

@@ -17,27 +17,7 @@ from __future__ import annotations
 from clemcore.clemgame import metrics
 from clemcore.clemgame.master import Outcome
 
-from sartco.world import MISMATCH_CODES, PYTHON_CODES, SANDBOX_CODES, WORLD_CODES, ErrorCode
-
-SUCCESS_CATEGORY = "success"  # the category recorded when the target was built
-
-
-def family(category: str | None) -> str:
-    """parse | python | world | sandbox | mismatch | success, for one recorded category."""
-    if category in (None, "", SUCCESS_CATEGORY):
-        return "success"
-    code = ErrorCode(category)
-    if code is ErrorCode.PARSE_ERROR:
-        return "parse"
-    if code in PYTHON_CODES:
-        return "python"
-    if code in WORLD_CODES:
-        return "world"
-    if code in SANDBOX_CODES:
-        return "sandbox"
-    if code in MISMATCH_CODES:
-        return "mismatch"
-    return "other"
+from sartco.world import SUCCESS_CATEGORY, ErrorCode
 
 
 def outcome_for(category: str | ErrorCode | None) -> Outcome:

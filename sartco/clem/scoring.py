@@ -25,11 +25,10 @@ from __future__ import annotations
 
 from clemcore.clemgame import GameScorer, metrics
 
-from sartco.world import ErrorCode
+from sartco.world import ErrorCode, category_family
 
 from .building import ATTEMPTS_KEY, BUILD_KEY, BuildRecord
 from .feedback import max_attempts
-from .outcomes import family
 
 NAN = float("nan")
 SCORES = ("Execution Success", "Exact Match", "CodeBLEU", "Cell Precision", "Cell Recall", "Cell F1")
@@ -56,7 +55,7 @@ class BuildScorer(GameScorer):
                 self.log_episode_score(name, NAN)
             category = record.category if record else str(ErrorCode.PARSE_ERROR)
             self.log_episode_score("Error Category", category)
-            self.log_episode_score("Error Family", family(category))
+            self.log_episode_score("Error Family", category_family(category))
             self.log_episode_score("Puts", 0)
             self.log_episode_score(metrics.BENCH_SCORE, NAN)
             return

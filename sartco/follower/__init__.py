@@ -17,6 +17,7 @@ no other exception leaves these functions for str input. `try_follow` returns No
 from __future__ import annotations
 
 from sartco.instances.prompts import TASKS
+from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
 
 from . import emit
 from .parse import Arrangement, FollowError, Placement, object_name, placements
@@ -34,7 +35,7 @@ def _texts(instructions) -> list[str]:
     return list(instructions)
 
 
-def read_placements(instructions, rows: int = 8, cols: int = 8) -> list[Placement]:
+def read_placements(instructions, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS) -> list[Placement]:
     """All placements of the turns so far, in order ('on top of it' refers across turns)."""
     steps: list[Placement] = []
     for text in _texts(instructions):
@@ -42,7 +43,7 @@ def read_placements(instructions, rows: int = 8, cols: int = 8) -> list[Placemen
     return steps
 
 
-def follow(instructions, task: str, context: str = "", rows: int = 8, cols: int = 8) -> str:
+def follow(instructions, task: str, context: str = "", rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS) -> str:
     """The code for `task` that the instructions describe; FollowError if they cannot be read."""
     texts = _texts(instructions)
     if task not in TASKS:
@@ -66,7 +67,7 @@ def follow(instructions, task: str, context: str = "", rows: int = 8, cols: int 
                           f"{type(exc).__name__}: {exc}") from exc
 
 
-def follow_turn(instruction: str, history=(), rows: int = 8, cols: int = 8) -> str:
+def follow_turn(instruction: str, history=(), rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS) -> str:
     """The put lines for one multi-turn instruction; `history` holds the earlier turns' texts."""
     try:
         before = read_placements(list(history), rows, cols) if history else []

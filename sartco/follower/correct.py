@@ -20,6 +20,7 @@ from __future__ import annotations
 import re
 
 from sartco.world.board import parse_key
+from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
 
 from .parse import FollowError, Placement, placements
 
@@ -71,7 +72,8 @@ def correction_steps(built: dict, target: dict) -> tuple[list[Placement], list[P
     return [p for _, p in sorted(removed, key=lambda lp: -lp[0])], additions
 
 
-def read_correction(text: str, rows: int = 8, cols: int = 8) -> tuple[list[Placement], list[Placement]]:
+def read_correction(text: str, rows: int = DEFAULT_ROWS,
+                    cols: int = DEFAULT_COLS) -> tuple[list[Placement], list[Placement]]:
     """The removals and additions in a correction, sentence by sentence: a sentence starting
     with "Remove" (take away, delete) names pieces to remove, any other names pieces to place.
     FollowError when a sentence names a piece it does not fully describe."""
@@ -85,7 +87,8 @@ def read_correction(text: str, rows: int = 8, cols: int = 8) -> tuple[list[Place
     return removals, additions
 
 
-def apply_correction(steps: list[Placement], text: str, rows: int = 8, cols: int = 8) -> list[Placement]:
+def apply_correction(steps: list[Placement], text: str, rows: int = DEFAULT_ROWS,
+                     cols: int = DEFAULT_COLS) -> list[Placement]:
     """The puts after a correction: each removal takes away the last put of that piece, the
     additions follow in their order. FollowError when the correction names no piece at all."""
     removals, additions = read_correction(text, rows, cols)

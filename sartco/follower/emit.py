@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import keyword
 
-from ..world.components import LETTERS
+from ..world.components import DEFAULT_COLS, DEFAULT_ROWS, LETTERS
 from .parse import Arrangement, FollowError, Placement
 
 RESERVED = {"board", "put", "init_board", "colors", "x", "y", "row", "col", "shape", "color", "shapes"}
@@ -60,7 +60,7 @@ def _sequence(values: tuple[int, ...], limit: int) -> str:
     return repr(vs)
 
 
-def repetition(arr: Arrangement, rows: int = 8, cols: int = 8) -> str:
+def repetition(arr: Arrangement, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS) -> str:
     """Loop code calling the given object function at every anchor."""
     if not arr.name:
         raise FollowError("no object name (expected a given function 'def NAME(board, colors, x, y)' "

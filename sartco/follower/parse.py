@@ -5,6 +5,8 @@ import ast
 import re
 from dataclasses import dataclass
 
+from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
+
 from . import grammar as g
 
 
@@ -74,7 +76,7 @@ class _Piece:
         self.same = False
 
 
-def placements(text: str, rows: int = 8, cols: int = 8,
+def placements(text: str, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS,
                previous: Placement | None = None) -> list[Placement]:
     """Every placement in a text, in order. `previous` resolves 'on top of it' in the first clause.
 

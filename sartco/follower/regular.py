@@ -3,7 +3,8 @@ from __future__ import annotations
 
 import re
 
-from ..world import COLORS, parse_key
+from ..world import COLORS, DEFAULT_COLS, DEFAULT_ROWS, parse_key
+from ..world.board import MAX_SIDE
 from . import parse as p
 from .parse import Arrangement, FollowError
 
@@ -15,7 +16,8 @@ def function_name(context: str) -> str | None:
     return m.group(1) if m else None
 
 
-def footprint(context: str, name: str | None, n_colors: int, rows: int = 8, cols: int = 8) -> Cells | None:
+def footprint(context: str, name: str | None, n_colors: int, rows: int = DEFAULT_ROWS,
+              cols: int = DEFAULT_COLS) -> Cells | None:
     """The cells the given object function covers, relative to its anchor.
 
     The follower reads the object function the way a model would try it out: it runs the function
@@ -28,7 +30,7 @@ def footprint(context: str, name: str | None, n_colors: int, rows: int = 8, cols
     from sartco.program import execute  # deferred: the grammar works without a worker process
 
     pad = max(rows, cols)  # an object may reach up to a board's size away from its anchor
-    size = min(2 * pad + max(rows, cols), 64)
+    size = min(2 * pad + max(rows, cols), MAX_SIDE)
     colors = [COLORS[i % len(COLORS)] for i in range(max(n_colors, 1))]
     program = (f"{context.strip()}\nboard = init_board({size}, {size})\n"
                f"{name}(board, {colors!r}, {pad}, {pad})\n")
@@ -44,7 +46,7 @@ def _span(cells: Cells) -> tuple[int, int]:
     return max(xs) - min(xs) + 1, max(ys) - min(ys) + 1
 
 
-def arrange(text: str, context: str = "", rows: int = 8, cols: int = 8) -> Arrangement:
+def arrange(text: str, context: str = "", rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS) -> Arrangement:
     """Read a regular-board instruction; decide where the object's anchors go."""
     kind, m = p.arrangement_kind(text)
     colors = p.colors_of(text)

@@ -1,8 +1,9 @@
 """The only place where model-written code runs.
 
-    from sartco.program import execute, compare, Execution, Comparison, Limits
+    from sartco.program import execute, compare, judge, Execution, Comparison, Limits
     ex = execute(code, rows=8, cols=8, limits=None)   # -> Execution(ok, error, message, cells, puts)
     cmp = compare(built_cells, target_cells)          # -> Comparison(es, category, precision, recall, f1)
+    verdict = judge(ex.ok, ex.error, ex.cells, target_cells)  # the same, ES 0 + the error unless ex.ok
 
 The program gets a fresh `board` (Board(rows, cols)), `put` and `init_board(rows, cols)`. The
 board that counts is the global `board` at the end if it is a Board, else the most recently
@@ -39,23 +40,29 @@ runs in a fresh one; verdicts are cached only when they depend on the source alo
 and lone surrogates before anything writes them; workers die with their parent process.
 
 
-Layers (each module's docstring has the details):
-  check.py    parse + check against the allowed subset + instrument for the budgets (pure)
-  budget.py   the length/integer budgets inside operators, conversions, formatting, str methods
-  modules.py  the stand-in modules a program may import
-  runtime.py  run one prepared program in a minimal namespace, map outcomes to ErrorCode
-  worker.py   the worker process loop (JSON lines over pipes, rlimits)
-  pool.py     persistent workers, batching, hard kill on wall time, restarts; execute()
-  compare.py  ES, mismatch category, cell precision/recall/F1
-  lines.py    one line of the `sartco execute` contract (parsed and answered inside the workers)
-  cli.py      `sartco execute` (JSON lines); bench.py `sartco bench-execute`
-  gold.py     the published gold programs with the authors' boards (tests, benchmark)
+Modules (each one's docstring has the details):
+  allowed.py      the allowed subset as data: builtins, attribute names, node types and fields
+  nodes.py        the check and instrumentation of each node type (rules and wraps)
+  instrument.py   parse + check + instrument in one linear pass (pure): prepare(source)
+  budget.py       the current program's budgets and stops, checked operators and builtins
+  conversions.py  int/str/repr/ascii with budgets;  formatting.py  %, str.format, format(), f-strings
+  methods.py      the methods a program may call per type, and the checked ones
+  modules.py      the stand-in modules a program may import
+  runtime.py      run one prepared program in a minimal namespace, map outcomes to ErrorCode
+  worker.py       the worker process loop (JSON lines over pipes, rlimits)
+  driver.py       the parent's side of one worker: chunks, answers, hard kill on wall time
+  pool.py         persistent workers, batching, restarts; execute(), execute_many()
+  execution.py    Limits, Execution; clean() for every message written
+  compare.py      Comparison: ES, mismatch category, cell precision/recall/F1; judge()
+  lines.py        one line of the `sartco execute` contract (parsed and answered inside the workers)
+  serve.py        `sartco execute` (JSON lines); bench.py `sartco bench-execute`
+  gold.py         the published gold programs with the authors' boards (tests, benchmark)
 
 `execute_many(programs, rows, cols, limits, workers=None)` runs a batch (split over up to two
 worker processes); `shutdown()` kills the workers (they restart on the next call).
 """
-from .compare import compare
+from .compare import Comparison, compare, judge
+from .execution import Execution, Limits
 from .pool import execute, execute_many, shutdown
-from .records import Comparison, Execution, Limits
 
-__all__ = ["execute", "execute_many", "shutdown", "compare", "Execution", "Comparison", "Limits"]
+__all__ = ["execute", "execute_many", "shutdown", "compare", "judge", "Execution", "Comparison", "Limits"]

@@ -9,14 +9,30 @@
 - precision/recall/F1 over the sets of (row, col, level, shape, colour) entries, level 0 at the
   bottom (a bridge counts in both its cells). 0/0 is 1.0 only when both boards are empty
   (nothing to build, nothing built); otherwise an undefined ratio is 0.0.
+
+`judge(ok, error, cells, target)` is the one verdict of an execution against its target (the
+games' builds and `sartco execute`): the comparison of the board it built, except that a
+program that did not run to the end has ES 0 and its own error as the category (P/R/F1 still
+count the board it built so far).
 """
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 from sartco.world import ErrorCode, parse_key
 
-from .records import Comparison
-
 E = ErrorCode
+
+
+@dataclass(frozen=True, slots=True)
+class Comparison:
+    """A built board against its target: execution success, mismatch category, cell P/R/F1."""
+
+    es: int
+    category: ErrorCode | None
+    precision: float
+    recall: float
+    f1: float
 
 
 def _stacks(cells: dict) -> dict[str, list[tuple]]:
@@ -69,3 +85,11 @@ def compare(built_cells: dict, target_cells: dict) -> Comparison:
         recall = hit / len(t) if t else 0.0
         f1 = 2 * precision * recall / (precision + recall) if precision + recall else 0.0
     return Comparison(int(category is None), category, precision, recall, f1)
+
+
+def judge(ok: bool, error: ErrorCode | None, cells: dict, target: dict) -> Comparison:
+    """An execution (did it run to the end, its error, the board it built) against its target."""
+    cmp = compare(cells, target)
+    if ok:
+        return cmp
+    return Comparison(0, error, cmp.precision, cmp.recall, cmp.f1)

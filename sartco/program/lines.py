@@ -8,10 +8,10 @@ out: {"id", "ok", "error": null | code, "message", "cells"} and, when a target w
      "es" (0|1), "category" (null, the program's error code, or a mismatch code),
      "precision", "recall", "f1".
 A program that fails has es 0 and its error as the category; P/R/F1 are still computed on the
-board it built so far. A malformed line (not JSON, not an object, id/code/target of the wrong
-type) gives {"id": <its id if a string, else null>, "ok": false, "error": "parse_error",
+board it built so far (compare.judge). A malformed line (not JSON, not an object, id/code/target
+of the wrong type) gives {"id": <its id if a string, else null>, "ok": false, "error": "parse_error",
 "message": "input line N: ...", "cells": {}} and no comparison fields. Ids and messages are
-written clean (records.clean: no lone surrogates or control characters), so that every output
+written clean (execution.clean: no lone surrogates or control characters), so that every output
 line is strict JSON and valid UTF-8 whatever the program or the input held.
 """
 from __future__ import annotations
@@ -22,8 +22,8 @@ import re
 from sartco.world import ErrorCode
 from sartco.world.board import KEY
 
-from .compare import compare
-from .records import clean
+from .compare import judge
+from .execution import clean
 
 KEYS = re.compile(rf"{KEY.pattern}(?:,{KEY.pattern})*")  # keys joined by commas
 # the output holds only fresh dicts, lists and strings (no cycles): skip the encoder's cycle check
@@ -73,10 +73,9 @@ def parse_line(number: int, raw: bytes, check_target: bool = True):
 def answer(ident, ok: bool, error, message: str, cells: dict, target) -> dict:
     out = {"id": clean(ident), "ok": ok, "error": error, "message": clean(message), "cells": cells}
     if target is not None:
-        cmp = compare(cells, target)
-        out["es"] = cmp.es if ok else 0
-        out["category"] = cmp.category if ok else error
-        out["precision"], out["recall"], out["f1"] = cmp.precision, cmp.recall, cmp.f1
+        verdict = judge(ok, error, cells, target)
+        out["es"], out["category"] = verdict.es, verdict.category
+        out["precision"], out["recall"], out["f1"] = verdict.precision, verdict.recall, verdict.f1
     return out
 
 

@@ -9,7 +9,7 @@ module is refused, naming why: `os`, `sys`, `subprocess`, `importlib`, `builtins
 would make the board a matter of chance; `re` can backtrack in C code for longer than any
 budget sees; `collections.namedtuple`, `typing.get_type_hints` and `string.Formatter` run text
 as code or read attributes by name, so they are not members. `MEMBERS` (names only)
-lets check.py refuse an unknown module or member before anything runs.
+lets instrument.py refuse an unknown module or member before anything runs.
 
 numpy is a stand-in for what honest code of this task does with it: `np.ndarray` (and the
 scalar types) in annotations and isinstance checks, small helpers (`arange`, `zeros`, `ones`,
@@ -27,8 +27,9 @@ import operator
 import string
 import typing
 
-from . import budget
-from .budget import INT, Forbidden, too_big, too_long
+from . import budget, formatting
+from .budget import Forbidden, too_big, too_long
+from .conversions import INT
 
 
 class Module:
@@ -163,7 +164,7 @@ _FACTORIES = {
                             "deque": collections.deque, "OrderedDict": collections.OrderedDict},
     "copy": lambda: {"copy": copy.copy, "deepcopy": copy.deepcopy},
     "operator": lambda: {**{n: getattr(operator, n) for n in _OPERATOR}, "add": budget.add, "mul": budget.mul,
-                         "pow": budget.power, "mod": budget.mod, "lshift": budget.lshift},
+                         "pow": budget.power, "mod": formatting.mod, "lshift": budget.lshift},
     "string": lambda: {n: getattr(string, n) for n in _STRING},
     "numpy": lambda: {"ndarray": ndarray, "array": array, "zeros": zeros, "ones": ones, "full": full,
                       "arange": arange, "int_": INT, "int32": INT, "int64": INT, "float64": float,
@@ -171,7 +172,7 @@ _FACTORIES = {
                       "ceil": math.ceil, "abs": abs},
 }
 _MEMBERS_CACHE = {name: make() for name, make in _FACTORIES.items()}
-MEMBERS = {name: frozenset(members) for name, members in _MEMBERS_CACHE.items()}  # for check.py
+MEMBERS = {name: frozenset(members) for name, members in _MEMBERS_CACHE.items()}  # for allowed.py and nodes.py
 
 REFUSED = {  # why a module a program may want is not there
     **dict.fromkeys(("os", "sys", "subprocess", "shutil", "pathlib", "io", "glob", "tempfile", "signal",
@@ -197,7 +198,7 @@ def load(name: str) -> Module:
 
 
 def import_module(name, globals=None, locals=None, fromlist=(), level=0):
-    """The `__import__` of a program's import statements (check.py refused every other name)."""
+    """The `__import__` of a program's import statements (instrument.py refused every other name)."""
     if level != 0 or name not in _MEMBERS_CACHE:
         raise Forbidden(refusal(name))
     return load(name)

@@ -1,4 +1,4 @@
-"""The parent side: persistent worker processes, batching, hard time limits, restarts.
+"""Persistent worker processes, batching, restarts; execute() and execute_many().
 
 `dispatch` sends items in chunks (a header line + one line per item) to up to `workers` worker
 processes (default: min(2, CPUs)), each driven by one thread that reads the answers while a
@@ -6,209 +6,27 @@ second one writes the chunks (so a worker finds its next chunk waiting). Items w
 (the source) go to the same worker, so its code cache sees all repeats; without keys the shares
 are balanced by size. `execute_many` sends programs (mode "code"), `sartco execute` sends its raw
 input lines (mode "line": the worker parses, runs, compares and writes the finished output line,
-so the parent only routes bytes); `execute` is a batch of one.
+so the parent only routes bytes); `execute` is a batch of one. Each worker is driven through
+driver.Worker (hard wall time, kills, restarts, the verdicts of dead workers). Nothing raises
+out of `execute`/`execute_many`.
 
-A worker answers each program on its own line, so the parent knows which program is running and
-gives each one `Limits.wall_time` seconds from the moment the previous answer was read. A late
-answer kills the worker (SIGKILL, then reaped) and the program gets `timeout`; a worker that
-dies gets its program `resource_limit` (out of memory: its own exit status, or SIGKILL from the
-kernel) or `runtime_error` (a crash, named by its signal, or another exit). A worker that
-retires after an answer (a leading "!", see worker.py) is replaced before the next program.
-The rest of the batch goes to a fresh worker. A worker compiles each chunk ahead (worker.py), for
-at most a tenth of a wall time, which the chunk's first program shares: so a kill before the first
-answer of a chunk of several blames nobody yet, and the rest runs again, each program compiled
-at its own turn. Nothing raises out of `execute`/`execute_many`.
-
-Workers are started lazily with `python -I -S`, survive between calls (the common case pays
-no start-up) and are killed at exit or by `shutdown()`. After a fork the child starts its own.
+Workers are started lazily, survive between calls (the common case pays no start-up) and are
+killed at exit or by `shutdown()`. After a fork the child starts its own.
 """
 from __future__ import annotations
 
 import atexit
-import fcntl
 import json
 import os
-import select
-import signal
-import subprocess
-import sys
 import threading
-import time
-from collections import deque
-from concurrent.futures import ThreadPoolExecutor
-from pathlib import Path
 
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, Board, ErrorCode, WorldError
 
-from .records import Execution, Limits, not_a_str
+from .driver import Worker, failed
+from .execution import Execution, Limits, not_a_str
 
 E = ErrorCode
 BATCH = 32  # a call with fewer items than this uses one worker
-CHUNK = 64  # items per worker round trip
-PATIENCE = 0.01  # most seconds to wait before reading more answers of a running batch: while a
-# worker works, the parent wakes up seldom and reads many answers at once; as the end of the batch
-# nears, the waits shrink to half the estimated rest, so the last answers are read as they come
-START_TIMEOUT = 30.0
-PIPE_SIZE = 1 << 20  # bytes of answers a worker can write ahead of the parent
-READ_SIZE = 1 << 16  # bytes per read (a read allocates its whole size first)
-_ROOT = str(Path(__file__).resolve().parents[2])
-_BOOT = (
-    "import sys; sys.path.insert(0, sys.argv[1]); "
-    "from sartco.program.worker import main; sys.exit(main(int(sys.argv[2])))"
-)
-RETIRED = b"!"  # the first byte of the last answer of a worker that retires (see worker.py)
-
-
-class _Dead(Exception):
-    """The worker process is gone or unusable."""
-
-
-class _Worker:
-    def __init__(self):
-        self.proc: subprocess.Popen | None = None
-        self.lines: deque[bytes] = deque()
-        self.tail = b""
-        self.lock = threading.Lock()
-        self.room = 4096  # bytes the worker's stdin pipe holds
-
-    # -- process ---------------------------------------------------------------------------
-    def start(self):
-        self.proc = _spawn([sys.executable, "-I", "-S", "-c", _BOOT, _ROOT, str(os.getpid())])
-        for pipe in (self.proc.stdin, self.proc.stdout):  # room for items sent ahead and answers that
-            try:  # pile up while the parent waits (Linux; elsewhere the default size)
-                fcntl.fcntl(pipe.fileno(), fcntl.F_SETPIPE_SZ, PIPE_SIZE)
-            except (AttributeError, OSError):
-                pass
-        try:
-            self.room = fcntl.fcntl(self.proc.stdin.fileno(), fcntl.F_GETPIPE_SZ)
-        except (AttributeError, OSError):
-            self.room = 4096  # POSIX guarantees at least PIPE_BUF
-        self.lines.clear()
-        self.tail = b""
-        if self._readline(time.monotonic() + START_TIMEOUT) != b'"ready"':
-            self.kill()
-            raise _Dead("the sandbox worker did not start")
-
-    def kill(self) -> int | None:
-        proc, self.proc = self.proc, None
-        if proc is None:
-            return None
-        try:
-            proc.kill()
-        except OSError:
-            pass
-        for stream in (proc.stdin, proc.stdout):
-            try:
-                stream.close()
-            except OSError:
-                pass
-        return proc.wait()
-
-    # -- i/o --------------------------------------------------------------------------------
-    def _readline(self, deadline: float) -> bytes | None:
-        """The next answer line; None when the deadline passed; raise _Dead on EOF."""
-        fd = self.proc.stdout.fileno()
-        while not self.lines:
-            remaining = deadline - time.monotonic()
-            if remaining <= 0 or not select.select([fd], [], [], remaining)[0]:
-                return None
-            chunk = os.read(fd, READ_SIZE)
-            if not chunk:
-                raise _Dead("the sandbox worker ended")
-            parts = (self.tail + chunk).split(b"\n")
-            self.tail = parts.pop()
-            self.lines.extend(parts)
-        return self.lines.popleft()
-
-    def _send(self, stdin, mode: str, items: list[bytes], rows: int, cols: int, limits: Limits, cache: bool,
-              ahead: bool):
-        """Write the items in chunks. For more than fits in the pipe at once this runs in a thread
-        of its own: the worker finds its next chunk waiting when it finishes one, and a full pipe
-        never blocks the reading of answers."""
-        try:
-            for k in range(0, len(items), CHUNK):
-                chunk = items[k:k + CHUNK]
-                header = json.dumps({"limits": limits.as_list(), "rows": rows, "cols": cols, "cache": cache,
-                                     "mode": mode, "items": len(chunk), "ahead": ahead}).encode()
-                stdin.write(b"\n".join([header, *chunk]) + b"\n")
-                stdin.flush()
-        except (OSError, ValueError):
-            pass  # the worker died or was killed: the reader finds out and reports it
-
-    def run(self, mode: str, items: list[bytes], rows: int, cols: int, limits: Limits, cache: bool) -> list:
-        """One answer per item: the worker's answer line (bytes), or an Execution for an item
-        whose worker timed out or died (the rest then goes to a fresh worker)."""
-        results: list = []
-        ahead = True  # the worker compiles each chunk ahead (see worker.py)
-        while len(results) < len(items):
-            todo = items[len(results):]
-            try:
-                if self.proc is None:
-                    self.start()
-            except (_Dead, OSError, ValueError) as exc:
-                self.kill()
-                results.extend(_failed(E.RUNTIME_ERROR, f"sandbox unavailable: {exc}") for _ in todo)
-                break
-            send = (self.proc.stdin, mode, todo, rows, cols, limits, cache, ahead)
-            writer = None
-            if len(todo) <= CHUNK and sum(map(len, todo)) + 4096 < self.room:
-                self._send(*send)  # one chunk that fits in the empty pipe: the write cannot block
-            else:
-                writer = threading.Thread(target=self._send, args=send, daemon=True)
-                writer.start()
-            started = time.monotonic()
-            for k in range(len(todo)):
-                if k and not self.lines and not select.select([self.proc.stdout], [], [], 0)[0]:
-                    # nothing to read: let answers pile up, so that one wake-up reads many
-                    rest = (len(todo) - k) * (time.monotonic() - started) / k
-                    if rest > 0.002:
-                        time.sleep(min(PATIENCE, rest / 2))
-                try:
-                    line = self._readline(time.monotonic() + limits.wall_time)
-                    failure = None if line is not None else _failed(
-                        E.TIMEOUT, f"the program ran longer than {limits.wall_time:g} s")
-                except (_Dead, OSError):
-                    line, failure = None, _died(self.kill())
-                if line is not None and line[:1] == RETIRED:  # the worker retired after answering
-                    results.append(line[1:])
-                    self.kill()
-                    break
-                if line is not None:
-                    results.append(line)
-                    continue
-                self.kill()
-                if ahead and k % CHUNK == 0 and len(todo) - k > 1:
-                    # no answer yet of a chunk the worker compiled ahead: any of its programs may
-                    # be at fault, so the rest runs again, each compiled at its own turn
-                    ahead = False
-                else:
-                    results.append(failure)
-                break
-            if writer is not None:
-                writer.join()  # done, or unblocked by the kill (a closed pipe)
-        return results
-
-
-def _died(status: int | None) -> Execution:
-    """The verdict of a program whose worker ended without answering it."""
-    from .worker import OUT_OF_MEMORY
-
-    if status == OUT_OF_MEMORY:
-        return _failed(E.RESOURCE_LIMIT, "the sandbox worker ran out of memory")
-    if status in (-signal.SIGKILL, -signal.SIGXCPU):  # the kernel's OOM killer or a CPU limit
-        return _failed(E.RESOURCE_LIMIT, f"the sandbox worker was killed ({signal.Signals(-status).name}): "
-                                         f"out of memory or CPU time")
-    if status is not None and status < 0:
-        try:
-            name = signal.Signals(-status).name
-        except ValueError:
-            name = f"signal {-status}"
-        return _failed(E.RUNTIME_ERROR, f"the program crashed the sandbox worker ({name})")
-    return _failed(E.RUNTIME_ERROR, f"the sandbox worker ended unexpectedly (status {status})")
-
-
-def _failed(code: ErrorCode, message: str) -> Execution:
-    return Execution(False, code, message, {}, 0)
 
 
 def _decode(line: bytes) -> Execution:
@@ -218,41 +36,21 @@ def _decode(line: bytes) -> Execution:
             raise ValueError("unexpected field types")
         return Execution(ok, None if code is None else ErrorCode(code), message, cells, puts)
     except (ValueError, TypeError) as exc:
-        return _failed(E.RUNTIME_ERROR, f"garbled answer from the sandbox worker: {exc}")
+        return failed(E.RUNTIME_ERROR, f"garbled answer from the sandbox worker: {exc}")
 
 
-# --- the pool -----------------------------------------------------------------------------------
-
-_spawner: tuple[int, ThreadPoolExecutor] | None = None  # (pid, executor)
-_spawner_lock = threading.Lock()
-
-
-def _spawn(argv: list[str]) -> subprocess.Popen:
-    """Start a worker from one long-lived thread: a worker's parent-death signal fires when the
-    thread that started it ends (prctl(2)), and the threads that drive workers come and go."""
-    global _spawner
-    with _spawner_lock:
-        if _spawner is None or _spawner[0] != os.getpid():
-            _spawner = (os.getpid(), ThreadPoolExecutor(1, thread_name_prefix="sartco-spawner"))
-        executor = _spawner[1]
-    return executor.submit(
-        subprocess.Popen, argv, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
-        close_fds=True, cwd="/",
-    ).result()
-
-
-_workers: list[_Worker] = []
+_workers: list[Worker] = []
 _pool_pid = None
 _pool_lock = threading.Lock()
 
 
-def _get_workers(n: int) -> list[_Worker]:
+def _get_workers(n: int) -> list[Worker]:
     global _pool_pid, _workers
     with _pool_lock:
         if _pool_pid != os.getpid():  # a forked child must not share its parent's workers
             _workers, _pool_pid = [], os.getpid()
         while len(_workers) < n:
-            _workers.append(_Worker())
+            _workers.append(Worker())
         return _workers[:n]
 
 
@@ -274,7 +72,7 @@ def default_workers() -> int:
 
 def dispatch(mode: str, items: list[bytes], keys: list | None, rows: int, cols: int, limits: Limits,
              workers: int | None = None, cache: bool = True) -> list:
-    """Run items on the workers; answers in input order (see _Worker.run). Items with equal
+    """Run items on the workers; answers in input order (see driver.Worker.run). Items with equal
     keys go to the same worker, so its code cache sees every repeat of a source; without keys
     (no cache to serve) the shares are balanced by size, since a program's cost grows with its
     text (parsing and compiling are most of it), so that no worker waits idle for the other."""
@@ -291,7 +89,7 @@ def dispatch(mode: str, items: list[bytes], keys: list | None, rows: int, cols: 
         for i, key in enumerate(keys):
             shares[hash(key) % n].append(i)
 
-    def drive(worker: _Worker, share: list[int]):
+    def drive(worker: Worker, share: list[int]):
         with worker.lock:
             for i, answer in zip(share, worker.run(mode, [items[i] for i in share], rows, cols, limits, cache)):
                 results[i] = answer
@@ -317,23 +115,23 @@ def execute_many(programs, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, l
         try:
             Board(rows, cols)
         except WorldError as exc:
-            return [_failed(exc.code, exc.message) for _ in programs]
+            return [failed(exc.code, exc.message) for _ in programs]
         results: list = [None] * len(programs)
         todo = []
         for i, p in enumerate(programs):
             if type(p) is str:
                 todo.append(i)
             else:
-                results[i] = _failed(E.TYPE_ERROR, not_a_str(p))
+                results[i] = failed(E.TYPE_ERROR, not_a_str(p))
         items = [json.dumps(programs[i]).encode() for i in todo]
         keys = [programs[i] for i in todo] if cache else None
         answers = dispatch("code", items, keys, rows, cols, limits, workers, cache)
         for i, answer in zip(todo, answers):
             results[i] = _decode(answer) if type(answer) is bytes else answer
-        return [r if r is not None else _failed(E.RUNTIME_ERROR, "the sandbox returned no result") for r in results]
+        return [r if r is not None else failed(E.RUNTIME_ERROR, "the sandbox returned no result") for r in results]
     except Exception as exc:  # noqa: BLE001 - the caller must never see an exception
         n = len(programs) if isinstance(programs, list) else 1
-        return [_failed(E.RUNTIME_ERROR, f"sandbox failure: {type(exc).__name__}: {exc}") for _ in range(n)]
+        return [failed(E.RUNTIME_ERROR, f"sandbox failure: {type(exc).__name__}: {exc}") for _ in range(n)]
 
 
 def execute(code: str, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, limits: Limits | None = None) -> Execution:

@@ -1,12 +1,13 @@
 """Run one prepared program on a fresh board, inside the worker process.
 
 The program's globals are `board`, `put`, `init_board`; its `__builtins__` is BUILTINS (no
-program can reach the dict, so one serves them all; `$t` is set per program): the allowed builtins (some with budgets, see budget.py: `range`, `round`, `sum`,
-`int`, `str`, `repr`, `pow`, `format`; `print` does nothing), a refusing stand-in for every
-other builtin name (calling it is `forbidden`), `__import__` for the stand-in modules
-(modules.py), and the `$` helpers that check.py inserted. The result board is the global
-`board` if it is a Board, else the most recently created board. Every outcome is turned into
-`[ok, code, message, cells, puts]`, the message cleaned (records.clean).
+program can reach the dict, so one serves them all; `$t` is set per program): the allowed
+builtins (some with budgets: `range`, `round`, `sum`, `pow` in budget.py, `int`, `str`, `repr`,
+`ascii` in conversions.py, `format` in formatting.py; `print` does nothing), a refusing
+stand-in for every other builtin name (calling it is `forbidden`), `__import__` for the
+stand-in modules (modules.py), and the `$` helpers that nodes.py inserts. The result board is
+the global `board` if it is a Board, else the most recently created board. Every outcome is
+turned into `[ok, code, message, cells, puts]`, the message cleaned (execution.clean).
 
 Python exceptions map to codes: NameError -> name_error, TypeError -> type_error, ValueError ->
 value_error, KeyError -> key_error, IndexError -> index_error, ZeroDivisionError ->
@@ -29,11 +30,13 @@ from operator import length_hint
 
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, Board, ErrorCode, WorldError, put
 
-from . import budget
-from .budget import CHECKED_METHODS, Forbidden, Limit
-from .check import ALLOWED_BUILTINS, DENIED, TYPE_METHODS, prepare
+from . import budget, conversions, formatting
+from .allowed import ALLOWED_BUILTINS, DENIED
+from .budget import Forbidden, Limit
+from .execution import clean, not_a_str
+from .instrument import prepare
+from .methods import CHECKED_METHODS, TYPE_METHODS
 from .modules import Module, import_module
-from .records import clean, not_a_str
 
 E = ErrorCode
 MESSAGE_CHARS = 400
@@ -70,7 +73,7 @@ def _caught(exc):
 
 class _Refused:
     """A builtin that reaches the interpreter, files or the terminal, for a program that reads
-    its name without binding it (check.py refuses the plain case before running)."""
+    its name without binding it (instrument.py refuses the plain case before running)."""
 
     __slots__ = ("name",)
 
@@ -87,17 +90,17 @@ class _Refused:
 
 _OWN = {  # builtins of ours (with budgets); the rest of ALLOWED_BUILTINS are Python's own
     "range": budget.checked_range, "round": budget.checked_round, "sum": budget.checked_sum,
-    "print": budget.no_print, "int": budget.INT, "str": budget.STR, "pow": budget.power,
-    "format": budget.format_value, "repr": budget.to_repr, "ascii": budget.to_ascii,
+    "print": budget.no_print, "int": conversions.INT, "str": conversions.STR, "pow": budget.power,
+    "format": formatting.format_value, "repr": conversions.to_repr, "ascii": conversions.to_ascii,
 }
 BUILTINS = {
     **{name: _Refused(name) for name in DENIED},
     **{name: _OWN.get(name) or getattr(builtins, name) for name in ALLOWED_BUILTINS},
     "__import__": import_module,  # what import statements call; no program can spell the name
-    "$add": budget.add, "$mul": budget.mul, "$pow": budget.power, "$lshift": budget.lshift, "$mod": budget.mod,
+    "$add": budget.add, "$mul": budget.mul, "$pow": budget.power, "$lshift": budget.lshift, "$mod": formatting.mod,
     "$iadd": budget.iadd, "$imul": budget.imul, "$ipow": budget.power, "$ilshift": budget.lshift,
-    "$imod": budget.mod, "$iitem": budget.iitem, "$slice": slice, "$len": budget.checked_len,
-    "$attr": _attr, "$caught": _caught, "$fstr": budget.fstring_field,
+    "$imod": formatting.mod, "$iitem": budget.iitem, "$slice": slice, "$len": budget.checked_len,
+    "$attr": _attr, "$caught": _caught, "$fstr": formatting.fstring_field,
 }
 
 # --- compile (cached by exact source text: the verdict and code object depend on nothing else) --
@@ -107,7 +110,7 @@ _cache: dict[str, tuple] = {}
 
 def compile_program(source: str, limits, cache: bool = True) -> tuple:
     """(code object, None, "") or (None, error code, message): the source's type and size
-    checked, then parsed, checked, instrumented and compiled (see check.py)."""
+    checked, then parsed, checked, instrumented and compiled (see instrument.py)."""
     if type(source) is not str:
         return (None, E.TYPE_ERROR, not_a_str(source))
     if len(source) > limits.source:
@@ -200,7 +203,7 @@ def _depth() -> int:
 
 def run(compiled: tuple, rows: int, cols: int, limits) -> list:
     """Run one program, given what compile_program made of it; return [ok, code or None,
-    message, cells, puts]. The message is clean (records.clean). A budget stop, a MemoryError or
+    message, cells, puts]. The message is clean (execution.clean). A budget stop, a MemoryError or
     an internal error sets SPOILED: the worker answers, then retires."""
     global _STEPS
     code, error, message = compiled

@@ -59,7 +59,7 @@ def _limit(kind, soft):
 
 
 def _die_with_parent(parent: int) -> None:
-    """SIGKILL when the thread that started this worker (pool.py's spawner) ends."""
+    """SIGKILL when the thread that started this worker (driver.py's spawner) ends."""
     import ctypes
     import signal
 
@@ -86,7 +86,7 @@ def _resident_meter():
 def main(parent: int = 0) -> int:
     from . import runtime
     from .lines import encode, finish, parse_line
-    from .records import Limits
+    from .execution import Limits
     from .runtime import compile_program, run
 
     _die_with_parent(parent)

@@ -5,7 +5,7 @@ import re
 from itertools import compress
 
 from .components import DEFAULT_COLS, DEFAULT_ROWS
-from .errors import ErrorCode, WorldError
+from .error_codes import ErrorCode, WorldError
 
 Cells = dict[str, list[list[str]]]
 MAX_SIDE = 64

@@ -1,5 +1,5 @@
 """Renderers, all from the canonical cells form: the paper's text grid and grid explanation for
-prompts, and pictures (SVG, optionally PNG) for transcripts."""
+prompts, and the picture of a target beside a built board (SVG) for transcripts."""
 from __future__ import annotations
 
 from html import escape
@@ -75,13 +75,6 @@ def _grid_svg(cells: Cells, rows: int, cols: int, ox: float, title: str, marked:
     return out
 
 
-def board_svg(cells: Cells, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, title: str = "") -> str:
-    """A picture of one board: each piece drawn in its colour, higher pieces smaller on top."""
-    width, height = cols * CELL + 2, rows * CELL + 26
-    body = _grid_svg(cells, rows, cols, 1, title, set())
-    return f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}">' + "".join(body) + "</svg>"
-
-
 def differing_cells(target: Cells, built: Cells) -> set[str]:
     return {k for k in set(target) | set(built) if target.get(k) != built.get(k)}
 
@@ -92,13 +85,3 @@ def diff_svg(target: Cells, built: Cells, rows: int = DEFAULT_ROWS, cols: int = 
     width, height = 2 * cols * CELL + 30, rows * CELL + 26
     body = _grid_svg(target, rows, cols, 1, "target", marked) + _grid_svg(built, rows, cols, cols * CELL + 28, "built", marked)
     return f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}">' + "".join(body) + "</svg>"
-
-
-def svg_to_png(svg: str, path: str) -> bool:
-    """Write a PNG if cairosvg is installed; return False (and write nothing) otherwise."""
-    try:
-        import cairosvg  # optional
-    except ImportError:
-        return False
-    cairosvg.svg2png(bytestring=svg.encode(), write_to=str(path))
-    return True

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from .board import Board
 from .components import BRIDGES, COLORS, MAX_DEPTH, NOTHING_ON_TOP, SHAPES
-from .errors import ErrorCode, WorldError
+from .error_codes import ErrorCode, WorldError
 
 E = ErrorCode
 

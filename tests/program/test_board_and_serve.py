@@ -16,7 +16,7 @@ def test_serve_pipelined_batches_answer_in_order():
     import io
     import json
 
-    from sartco.program.cli import serve
+    from sartco.program.serve import serve
 
     lines = []
     for i in range(200):

@@ -1,11 +1,12 @@
-"""compare(): ES, the mismatch categories and P/R/F1; `sartco execute`: the JSON-lines contract."""
+"""compare(): ES, the mismatch categories and P/R/F1; judge(): an execution against its target;
+`sartco execute`: the JSON-lines contract."""
 import json
 import subprocess
 import sys
 
 import pytest
 
-from sartco.program import Comparison, compare, execute
+from sartco.program import Comparison, compare, execute, judge
 from sartco.world import ErrorCode
 
 E = ErrorCode
@@ -54,6 +55,22 @@ def test_bridge_counts_in_both_cells():
     assert built == {"0:0": [["bridge-h", "red"]], "0:1": [["bridge-h", "red"]]}
     cmp = compare(built, {"0:0": [["bridge-h", "red"]]})
     assert (cmp.category, cmp.precision, cmp.recall) == (E.MISMATCH_LOCATION, 0.5, 1.0)
+
+
+def test_judge_a_program_that_failed_part_way_has_es_0_and_its_error():
+    ex = execute("put(board, 'washer', 'red', 1, 1)\nput(board, 'nut', 'blue', 1, 1)\nput(board, 'screw', 'green', 2, 2)\n"
+                 "put(board, 'nut', 'red', 2, 2)")
+    assert (ex.ok, ex.error, ex.cells) == (False, E.NOT_ON_TOP_OF_SCREW, TARGET)  # the target, then a failed put
+    assert compare(ex.cells, TARGET).es == 1
+    assert judge(ex.ok, ex.error, ex.cells, TARGET) == Comparison(0, E.NOT_ON_TOP_OF_SCREW, 1.0, 1.0, 1.0)
+    partial = execute("put(board, 'washer', 'red', 1, 1)\nx = 1 / 0")
+    assert judge(partial.ok, partial.error, partial.cells, TARGET) == Comparison(
+        0, E.ZERO_DIVISION, 1.0, 1 / 3, pytest.approx(0.5))
+
+
+@pytest.mark.parametrize("built", [TARGET, {"1:1": [W]}, {}])
+def test_judge_a_program_that_ran_is_compare(built):
+    assert judge(True, None, built, TARGET) == compare(built, TARGET)
 
 
 def _run_cli(lines: list[str], *args) -> list[dict]:

@@ -7,7 +7,7 @@ program still gets its own exact result, in input order.
 """
 import pytest
 
-from sartco.program import Limits, execute_many, pool
+from sartco.program import Limits, driver, execute_many, pool
 from sartco.world import ErrorCode
 
 RUNAWAY = "x = sum(sum(range(10**6)) for i in range(10**6))"  # a loop in C code: only a kill stops it
@@ -19,7 +19,7 @@ def _benign(i: int) -> str:
 
 @pytest.fixture
 def small_chunks(monkeypatch):
-    monkeypatch.setattr(pool, "CHUNK", 4)
+    monkeypatch.setattr(driver, "CHUNK", 4)
     pool.shutdown()
     yield
     pool.shutdown()

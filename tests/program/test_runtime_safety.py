@@ -7,9 +7,9 @@ import time
 
 import pytest
 
-from sartco.program import Limits, execute, pool, runtime
-from sartco.program.check import prepare
-from sartco.program.records import clean
+from sartco.program import Limits, driver, execute, runtime
+from sartco.program.instrument import prepare
+from sartco.program.execution import clean
 from sartco.world import Board, ErrorCode
 
 E = ErrorCode
@@ -100,7 +100,7 @@ def test_clean():
     (3, E.RESOURCE_LIMIT, "memory"), (1, E.RUNTIME_ERROR, "status 1"),
 ])
 def test_a_dead_worker_is_named(status, code, word):
-    ex = pool._died(status)
+    ex = driver._died(status)
     assert (ex.ok, ex.error) == (False, code) and word in ex.message
 
 

@@ -20,7 +20,7 @@ from sartco.world.board import MAX_SIDE
 
 from .lines import finish, parse_line
 from .pool import dispatch
-from .records import Execution, Limits
+from .execution import Execution, Limits
 
 CHUNK = 1 << 16
 IN_FLIGHT = 2  # batches being run at once (the next one queues on each worker's lock)

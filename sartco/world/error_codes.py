@@ -1,4 +1,5 @@
-"""The one vocabulary of failures: the paper's error taxonomy plus the sandbox's own codes.
+"""The one vocabulary of failures: the paper's error taxonomy plus the sandbox's own codes, their
+families (ErrorCode.family, category_family) and WorldError, what put/init_board raise.
 
 World errors never import clemcore; the game masters translate them in one place.
 """
@@ -35,8 +36,14 @@ class ErrorCode(StrEnum):
     # the game's own: an answer in which no code was found
     PARSE_ERROR = "parse_error"
 
+    @property
+    def family(self) -> str:
+        """parse | python | world | sandbox | mismatch: the kind of failure, for reports and
+        transcripts."""
+        return _FAMILIES[self]
 
-# families of error codes, for reports and transcripts (sartco.clem.outcomes.family)
+
+# families of error codes, for reports and transcripts (ErrorCode.family)
 PYTHON_CODES = frozenset({
     ErrorCode.SYNTAX_ERROR, ErrorCode.KEY_ERROR, ErrorCode.NAME_ERROR, ErrorCode.TYPE_ERROR,
     ErrorCode.VALUE_ERROR, ErrorCode.INDEX_ERROR, ErrorCode.ZERO_DIVISION, ErrorCode.RUNTIME_ERROR,
@@ -47,6 +54,19 @@ WORLD_CODES = frozenset({
 })
 SANDBOX_CODES = frozenset({ErrorCode.FORBIDDEN, ErrorCode.TIMEOUT, ErrorCode.RESOURCE_LIMIT})
 MISMATCH_CODES = frozenset(c for c in ErrorCode if c.value.startswith("mismatch_"))
+_FAMILIES = {
+    ErrorCode.PARSE_ERROR: "parse", **dict.fromkeys(PYTHON_CODES, "python"), **dict.fromkeys(WORLD_CODES, "world"),
+    **dict.fromkeys(SANDBOX_CODES, "sandbox"), **dict.fromkeys(MISMATCH_CODES, "mismatch"),
+}
+SUCCESS_CATEGORY = "success"  # the category recorded for a build that equals its target
+
+
+def category_family(category: str | None) -> str:
+    """The family of a recorded category: "success" for a build that equals its target (None, ""
+    or SUCCESS_CATEGORY), else its ErrorCode's family (ValueError for an unknown category)."""
+    if category in (None, "", SUCCESS_CATEGORY):
+        return "success"
+    return ErrorCode(category).family
 
 
 class WorldError(Exception):

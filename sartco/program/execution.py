@@ -1,4 +1,6 @@
-"""The records of `sartco.program`: budgets in, results out (frozen, slotted, JSON-friendly)."""
+"""One execution's records: Limits (its budgets, in) and Execution (what it did, out), frozen,
+slotted and JSON-friendly; and the text rules every answer of the sandbox obeys (clean,
+not_a_str). The comparison with a target is compare.py's."""
 from __future__ import annotations
 
 import re
@@ -21,7 +23,7 @@ class Limits:
     wall_time   seconds per program, enforced by killing the worker process (catches loops
                 inside C code that no Python-level counter sees); in a batch, the first
                 program of each chunk shares it with compiling the chunk ahead (at most a
-                tenth of it; a kill there reruns the chunk program by program, see pool.py)
+                tenth of it; a kill there reruns the chunk program by program, see driver.py)
     memory      bytes of address space the worker may add (RLIMIT_AS)
     source      characters of source text
     """
@@ -48,17 +50,6 @@ class Execution:
     message: str
     cells: dict = field(default_factory=dict)
     puts: int = 0
-
-
-@dataclass(frozen=True, slots=True)
-class Comparison:
-    """A built board against its target: execution success, mismatch category, cell P/R/F1."""
-
-    es: int
-    category: ErrorCode | None
-    precision: float
-    recall: float
-    f1: float
 
 
 def not_a_str(program) -> str:

@@ -32,11 +32,10 @@ from pathlib import Path
 
 from sartco.dataset import SHARED_DATA as DEFAULT_DATA
 from sartco.errors import UserError
+from sartco.program import pool
+from sartco.program.pool import default_workers, execute_many, shutdown
+from sartco.program.serve import serve
 from sartco.published.gold import gold_programs
-
-from .cli import serve
-from . import pool
-from .pool import default_workers, execute_many, shutdown
 
 
 def configure(parser) -> None:

@@ -1,0 +1,262 @@
+"""The check and the instrumentation of each node type, applied by instrument.py's walk.
+
+Rules (RULES) check a node itself and instrument it in place; wraps (WRAPS) replace a child by
+its instrumented form. Helpers live under names starting with `$`, which no Python source can
+spell, so a program can neither reach nor shadow them:
+- `$t()` (a C-level counter that raises StopIteration when the step budget is spent) at the top
+  of every loop body and function body, in front of every lambda body, and as the first
+  condition of every comprehension `for`;
+- `a + b`, `a * b`, `a ** b`, `a << b`, `a % b` (and their augmented forms) become checked
+  calls that refuse to build too-long sequences or too-large integers (and printf-style `%`
+  formatting with widths above three digits); `a + 1`, `1 + a`, `a += 1` (an int constant
+  of at most 64 bits, or a float) stay plain: they make a number one bit longer at most, or fail
+  with TypeError, and never a sequence;
+- `x.m` becomes `$attr(x, 'm')`, f-strings `$len(f'...')`, displays with `*x` `$len([...])`;
+- f-string format specs: a constant one has numbers of at most three digits, a computed one is
+  checked when it runs (`$fstr`);
+- every `except` handler starts with `$caught(<the exception>)`, which raises budget stops and
+  refusals again (a program catches its own errors, never the sandbox's).
+"""
+from __future__ import annotations
+
+import ast
+import re
+
+from .allowed import ATTRIBUTES, DENIED, FIELDS, PROVIDED
+from .budget import Forbidden
+from .formatting import SPEC_DIGITS
+from .modules import MEMBERS, refusal
+
+A = ast
+CHECKED_OPS = {ast.Add: "$add", ast.Mult: "$mul", ast.Pow: "$pow", ast.LShift: "$lshift", ast.Mod: "$mod"}
+INPLACE_OPS = {ast.Add: "$iadd", ast.Mult: "$imul", ast.Pow: "$ipow", ast.LShift: "$ilshift", ast.Mod: "$imod"}
+
+_SPEC_NUMBER = re.compile(r"\d+")
+
+
+def fail(node, text: str):
+    line = getattr(node, "lineno", None)
+    exc = Forbidden(f"line {line}: {text}" if line else text)
+    exc.position = (line or 0, getattr(node, "col_offset", 0))
+    raise exc
+
+
+class Walk:
+    """What one walk has seen: names the program binds, builtins it reads that are not there."""
+
+    __slots__ = ("stored", "denied")
+
+    def __init__(self):
+        self.stored: set[str] = set()
+        self.denied: dict[str, ast.AST] = {}
+
+
+def check_name(node, name: str, store: bool, walk: Walk):
+    if name[0] == "$":  # ours: no Python source can spell it
+        return
+    if name[0] == "_" and name[:2] == "__":
+        fail(node, f"names starting with two underscores reach the interpreter: {name}")
+    if store:
+        if name in PROVIDED:
+            fail(node, f"{name} is the task's world and cannot be redefined")
+        walk.stored.add(name)
+    elif name in DENIED and name not in walk.denied:
+        walk.denied[name] = node  # refused at the end unless the program binds the name itself
+
+
+def _loc(new, old):
+    new.lineno = old.lineno
+    new.col_offset = old.col_offset
+    new.end_lineno = old.end_lineno
+    new.end_col_offset = old.end_col_offset
+    return new
+
+
+_LOAD = ast.Load()
+
+
+def _call(helper: str, args: list, old) -> ast.Call:
+    at = {"lineno": old.lineno, "col_offset": old.col_offset,
+          "end_lineno": old.end_lineno, "end_col_offset": old.end_col_offset}
+    return ast.Call(ast.Name(helper, _LOAD, **at), args, [], **at)
+
+
+def _tick(old) -> ast.Expr:
+    return _loc(ast.Expr(_call("$t", [], old)), old)
+
+
+# --- rules: checks (and in-place instrumentation) of a node itself ---------------------------
+
+def _r_arg(n, walk):
+    check_name(n, n.arg, True, walk)
+
+
+def _r_keyword(n, walk):
+    if n.arg is not None and n.arg[:2] == "__":
+        fail(n, f"keyword arguments starting with two underscores are not allowed: {n.arg}")
+
+
+def _r_function(n, walk):
+    check_name(n, n.name, True, walk)
+    n.body.insert(0, _tick(n.body[0]))
+
+
+def _r_loop(n, walk):
+    n.body.insert(0, _tick(n.body[0]))
+
+
+def _r_lambda(n, walk):
+    n.body = _loc(ast.BoolOp(ast.And(), [_call("$t", [], n.body), n.body]), n.body)
+
+
+def _r_comprehension(n, walk):
+    if n.is_async:
+        fail(n.iter, "async comprehensions are not allowed")
+    n.ifs.insert(0, _call("$t", [], n.iter))
+
+
+def _r_formatted(n, walk):
+    """A constant spec is checked here; a computed one (f'{x:>{w}}') is checked when it runs:
+    the field becomes f'{$fstr(x, conversion, spec)}'."""
+    spec = n.format_spec
+    if spec is None:
+        return
+    parts = spec.values if type(spec) is ast.JoinedStr else [spec]
+    if all(type(part) is ast.Constant for part in parts):
+        for part in parts:
+            if any(len(number) > SPEC_DIGITS for number in _SPEC_NUMBER.findall(str(part.value))):
+                fail(n, f"f-string format widths and precisions above {'9' * SPEC_DIGITS} are not allowed")
+        return
+    n.value = _call("$fstr", [n.value, _loc(ast.Constant(n.conversion), n), spec], n)
+    n.conversion, n.format_spec = -1, None
+
+
+def _r_handler(n, walk):
+    """Every handler first hands what it caught to $caught, which raises it again if it is a
+    budget stop or a refusal: a program may catch its own errors, never the sandbox's."""
+    if n.name is None:
+        n.name = "$e"
+    else:
+        check_name(n, n.name, True, walk)
+    n.body.insert(0, _loc(ast.Expr(_call("$caught", [_loc(ast.Name(n.name, _LOAD), n)], n)), n.body[0]))
+
+
+def _r_scope(n, walk):  # global, nonlocal
+    for name in n.names:
+        check_name(n, name, True, walk)
+
+
+def _r_import(n, walk):
+    for alias in n.names:
+        if alias.name not in MEMBERS:
+            fail(n, refusal(alias.name))
+        check_name(n, (alias.asname or alias.name).partition(".")[0], True, walk)
+
+
+def _r_import_from(n, walk):
+    module = n.module or ""
+    if n.level or module not in MEMBERS:
+        fail(n, refusal("." * n.level + module))
+    for alias in n.names:
+        if alias.name == "*":
+            walk.stored.update(MEMBERS[module])
+        elif alias.name not in MEMBERS[module]:
+            fail(n, f"{module}.{alias.name} is not available in the sandbox "
+                    f"(available: {', '.join(sorted(MEMBERS[module]))})")
+        else:
+            check_name(n, alias.asname or alias.name, True, walk)
+
+
+RULES = {
+    A.arg: _r_arg, A.keyword: _r_keyword, A.FunctionDef: _r_function,
+    A.For: _r_loop, A.While: _r_loop, A.Lambda: _r_lambda, A.comprehension: _r_comprehension,
+    A.FormattedValue: _r_formatted, A.ExceptHandler: _r_handler, A.Global: _r_scope, A.Nonlocal: _r_scope,
+    A.Import: _r_import, A.ImportFrom: _r_import_from,
+}
+
+
+# --- wraps: a child replaced by its instrumented form -----------------------------------------
+
+def _w_attribute(n, wrapped):
+    if type(n.ctx) is not ast.Load:
+        fail(n, f"assigning to an attribute (.{n.attr}) is not allowed")
+    if n.attr[0] == "_":
+        fail(n, f"attributes starting with an underscore reach the interpreter: .{n.attr}")
+    if n.attr not in ATTRIBUTES:
+        fail(n, f"attribute .{n.attr} is not available in the sandbox (only the common methods of "
+                f"str, list, dict, set and tuple, and the members of the allowed modules)")
+    return _call("$attr", [n.value, _loc(ast.Constant(n.attr), n)], n)
+
+
+def _small_number(node) -> bool:
+    """A constant int (not bool) or float of at most 64 bits: adding it to anything gives a
+    number at most one bit longer, or a TypeError; it can never build a sequence."""
+    if type(node) is not ast.Constant:
+        return False
+    t = type(node.value)
+    return t is float or (t is int and -(1 << 64) < node.value < (1 << 64))
+
+
+def _w_binop(n, wrapped):
+    op = type(n.op)
+    helper = CHECKED_OPS.get(op)
+    if helper is None or (op is ast.Add and (_small_number(n.right) or _small_number(n.left))):
+        return n
+    return _call(helper, [n.left, n.right], n)
+
+
+def _w_augassign(n, wrapped):
+    target, op = n.target, type(n.op)
+    if type(target) is ast.Attribute:
+        fail(n, f"assigning to an attribute (.{target.attr}) is not allowed")
+    helper = INPLACE_OPS.get(op)
+    if helper is None or (op is ast.Add and _small_number(n.value)):
+        return n
+    if type(target) is ast.Name:
+        load = _loc(ast.Name(target.id, ast.Load()), target)
+        return _loc(ast.Assign([target], _call(helper, [load, n.value], n)), n)
+    if type(target) is ast.Subscript:
+        key = target.slice
+        if type(key) is ast.Slice:
+            none = _loc(ast.Constant(None), key)
+            key = _call("$slice", [key.lower or none, key.upper or none, key.step or none], key)
+        args = [target.value, key, _loc(ast.Name(helper, ast.Load()), n), n.value]
+        return _loc(ast.Expr(_call("$iitem", args, n)), n)
+    fail(n, "augmented assignment to this target is not allowed")
+
+
+# a node wrapped in $len is visited again as the wrapper's argument: `wrapped` remembers it
+def _w_joined(n, wrapped):
+    if id(n) in wrapped:
+        return n
+    wrapped.add(id(n))
+    return _call("$len", [n], n)
+
+
+def _w_display(n, wrapped):
+    if type(getattr(n, "ctx", _LOAD)) is not ast.Load or ast.Starred not in map(type, n.elts) or id(n) in wrapped:
+        return n
+    wrapped.add(id(n))
+    return _call("$len", [n], n)
+
+
+# every wrap, called as wrap(node, wrapped)
+WRAPS = {
+    A.Attribute: _w_attribute, A.BinOp: _w_binop, A.AugAssign: _w_augassign,
+    A.JoinedStr: _w_joined, A.List: _w_display, A.Tuple: _w_display, A.Set: _w_display,
+}
+
+
+def _is_list_field(t: type, field: str) -> bool:
+    """Whether a field of node type t holds a list of nodes (from the grammar: `*` fields)."""
+    if t in (A.Lambda, A.IfExp):
+        return False
+    return field in {
+        "body", "targets", "orelse", "values", "elts", "keys", "generators", "comparators",
+        "keywords", "ifs", "posonlyargs", "kwonlyargs", "kw_defaults", "defaults", "handlers", "finalbody",
+        "decorator_list",
+    } or (field == "args" and t in (A.Call, A.arguments))
+
+
+# per allowed node type: (rule or None, ((field, whether it holds a list of nodes), ...))
+PLAN: dict[type, tuple] = {t: (RULES.get(t), tuple((f, _is_list_field(t, f)) for f in fs)) for t, fs in FIELDS.items()}
