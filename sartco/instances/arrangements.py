@@ -19,24 +19,25 @@ from .templates import render
 
 
 @dataclass(frozen=True, slots=True)
-class Arrangement:
+class ArrangementTemplates:
+    """The two templates of one regular-board arrangement: its repetition code and its instruction."""
     name: str                      # "regular_seed12"
     code_template: str             # "code/regular/regular_seed12.j2"
     instruction_template: str      # "instructions/regular/regular_template12.j2"
 
 
-def arrangement(name: str) -> Arrangement:
+def arrangement(name: str) -> ArrangementTemplates:
     number = name.removeprefix("regular_seed")
-    return Arrangement(name, f"code/regular/{name}.j2", f"instructions/regular/regular_template{number}.j2")
+    return ArrangementTemplates(name, f"code/regular/{name}.j2", f"instructions/regular/regular_template{number}.j2")
 
 
-def output_code(arr: Arrangement, name: str, colors, obj: ObjectSpec) -> str:
+def output_code(arr: ArrangementTemplates, name: str, colors, obj: ObjectSpec) -> str:
     """The repetition code: what the model writes, given the object function."""
     return render(arr.code_template, name=name, colors=list(colors), rows=obj.rows,
                   cols=obj.cols, cells=[list(c) for c in obj.cells]).strip("\n")
 
 
-def instruction(arr: Arrangement, name: str, colors, obj: ObjectSpec) -> str:
+def instruction(arr: ArrangementTemplates, name: str, colors, obj: ObjectSpec) -> str:
     return " ".join(render(arr.instruction_template, name=name, colors=list(colors),
                            rows=obj.rows, cols=obj.cols).split())
 
