@@ -33,12 +33,13 @@ from clemcore.clemgame import DialogueGameMaster, Player
 from clemcore.clemgame.errors import ParseError
 
 from sartco.clem import benchmark  # the module, not the class: one GameBenchmark subclass per master.py
-from sartco.clem.builder import Builder, rulebased_code
+from sartco.clem.answers import instruct_answers
 from sartco.clem.building import ATTEMPTS_KEY, BuildRecord, build_for, finish_build, log_build, parse_failure_for
 from sartco.clem.feedback import feedback_for, max_attempts
 from sartco.clem.outcomes import log_outcome
 from sartco.clem.paper import PAPER_EPISODE_FIELDS, PaperScorer, finish_paper, is_paper
 from sartco.clem.parsing import parse_code
+from sartco.clem.players import Builder
 from sartco.clem.transcript import MarkdownTranscript
 
 
@@ -51,24 +52,9 @@ class CobotInstruct(MarkdownTranscript, DialogueGameMaster):
         self.codes: list[str] = []  # the code of each turn (paper protocol: the raw answers)
         self.attempts: list[BuildRecord] = []
         self.max_attempts = max_attempts(self.experiment)
-        script = instance.get("script") or (instance["mock_answers"] if self.paper else None)
-        self.builder = Builder(self.player_models[0], gold_turns=instance.get("gold_turns", ()),
-                               rulebased=None if self.paper else self._follow, script=script)
-        self.add_player(self.builder, initial_prompt=instance.get("prompt") or None,
-                        initial_context=self.turns[0])
-
-    def _follow(self, turn: int, context: dict) -> str:
-        """What the rule-based follower writes for this turn (model `rulebased`)."""
-        from sartco.follower import FollowError, follow_turn
-        i = self.instance
-        rows, cols = i["rows"], i["cols"]
-        if i["task"] == "first_order" and len(i["instructions"]) > 1 and not self.attempts:  # one turn's puts
-            k = min(turn, len(i["instructions"]) - 1)
-            try:
-                return follow_turn(i["instructions"][k], i["instructions"][:k], rows, cols)
-            except FollowError as error:
-                return f"# I cannot follow this instruction: {error}"
-        return rulebased_code(i["instructions"], i["task"], i.get("given_code", ""), rows, cols)
+        model = self.player_models[0]
+        self.builder = Builder(model, instruct_answers(model.name, instance, paper=self.paper))
+        self.add_player(self.builder, initial_context=self.turns[0])
 
     def _parse_response(self, player: Player, response: str) -> str:
         return response if self.paper else parse_code(response)  # the paper protocol reads answers at the end

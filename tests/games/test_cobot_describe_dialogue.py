@@ -15,7 +15,8 @@ from pathlib import Path
 import pytest
 
 from sartco.cli import main as sartco_main
-from sartco.clem.dialogue import correction_text, parse_builder_answer, parse_review, settings_of
+from sartco.clem.dialogue import parse_builder_answer, parse_review, settings_of
+from sartco.clem.dialogue_answers import correction_text
 from sartco.clem.parsing import ParseError
 from sartco.follower import emit
 from sartco.follower.correct import apply_correction, pieces
