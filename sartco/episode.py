@@ -41,6 +41,9 @@ DIALOGUE_SCORES = (ES_AT_1, ES_AT_N, CELL_F1_AT_1, CELL_F1_AT_N, FIRST_SUCCESS_R
 ROUND_PREFIX = "ES Round "
 # the describer's instruction (sartco.clem.describer)
 DESCRIBER_ANSWERED = "Describer Answered"
+INSTRUCTION_WORDS = "Instruction Words"
+INSTRUCTION_CHARACTERS = "Instruction Characters"
+OBJECT_NAMED = "Object Named"
 # the paper protocol (sartco.clem.paper): shares of the dialogue's turns, 0..1
 PAPER_SCORES = {"em": "Paper EM", "cb": "Paper CB", "es": "Paper ES"}
 
@@ -53,6 +56,7 @@ def round_score(k: int) -> str:
 # ---------------------------------------------------------------------------- interactions.json keys
 BUILD_KEY = "sartco_build"            # one build's record (sartco.clem.building.BuildRecord.to_json)
 ATTEMPTS_KEY = "sartco_attempts"      # every build of an episode, in order
+MAX_ATTEMPTS_KEY = "sartco_max_attempts"  # the attempts the experiment allows (sartco.clem.feedback.max_attempts)
 INSTRUCTION_KEY = "sartco_instruction"  # the describer's instruction: {"text", "error", "combo_name"}
 DIALOGUE_KEY = "sartco_dialogue"      # the describe dialogue's log
 PAPER_KEY = "sartco_paper"            # the paper protocol's reading: {"em", "cb", "es", "turns": [...]}

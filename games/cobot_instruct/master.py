@@ -14,8 +14,7 @@ Episode = one instance of in/instances.json:
   gold_turns    the gold code of each turn (what `mock` answers)
   target        the target board in canonical cells form; rows, cols; task
 Multi-turn: the builder's code accumulates over the turns and is executed once at the end.
-Feedback experiments (experiment field `attempts` N > 1; the older `repair_attempts` n means
-N = n + 1): after a failed attempt the builder gets sartco.clem.feedback's message (error code
+Feedback experiments (experiment field `attempts` N > 1, logged under `sartco_max_attempts`): after a failed attempt the builder gets sartco.clem.feedback's message (error code
 and message, or "the board you built differs", with the built board as grid_text; never the
 target) and answers with the complete corrected code, run on a fresh board, up to N attempts.
 An answer without code is then a failed attempt (parse_error) like any other; the episode is
@@ -34,13 +33,14 @@ from clemcore.clemgame.errors import ParseError
 
 from sartco.clem import benchmark  # the module, not the class: one GameBenchmark subclass per master.py
 from sartco.clem.answers import instruct_answers
-from sartco.clem.building import ATTEMPTS_KEY, BuildRecord, build_for, finish_build, log_build, parse_failure_for
+from sartco.clem.building import BuildRecord, build_for, finish_build, log_build, parse_failure_for
 from sartco.clem.feedback import feedback_for, max_attempts
 from sartco.clem.outcomes import log_outcome
 from sartco.clem.paper import PAPER_EPISODE_FIELDS, PaperScorer, finish_paper, is_paper
 from sartco.clem.parsing import parse_code
 from sartco.clem.players import Builder
 from sartco.clem.transcript import MarkdownTranscript
+from sartco.episode import ATTEMPTS_KEY, MAX_ATTEMPTS_KEY
 
 
 class CobotInstruct(MarkdownTranscript, DialogueGameMaster):
@@ -87,6 +87,7 @@ class CobotInstruct(MarkdownTranscript, DialogueGameMaster):
         self.set_context_for(self.builder, feedback_for(record, attempts_left=left))
 
     def _on_after_game(self):
+        self.log_key(MAX_ATTEMPTS_KEY, self.max_attempts)  # what the scorer (and so the report) reads
         if self.max_attempts > 1:
             self.log_key(ATTEMPTS_KEY, [a.to_json() for a in self.attempts])
         log_outcome(self)

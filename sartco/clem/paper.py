@@ -16,8 +16,8 @@ Score = 100 x Paper ES.
 """
 from __future__ import annotations
 
+from sartco.episode import PAPER_KEY, PAPER_SCORES
 from sartco.paper import PROTOCOL
-from sartco.episode import PAPER_SCORES
 from sartco.paper.table3 import generation, load_table3
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
 
@@ -26,7 +26,6 @@ from .building import build_answers, log_build
 from .outcomes import set_share_outcome
 from .scoring import BuildScorer
 
-PAPER_KEY = "sartco_paper"     # interactions.json: {"em", "cb", "es", "turns": [...]}
 PAPER_EVENT = "paper_turn"     # one GM->GM event per turn: what the authors' scorer read and scored
 # what cobot_instruct's master and scorer read from a paper episode (checked before clem run plays)
 PAPER_EPISODE_FIELDS = {**EPISODE_FIELDS, "protocol": str, "variant": str, "messages": list, "mock_answers": list,

@@ -86,7 +86,7 @@ def test_multi_turn_parse_error_in_the_middle_aborts(play_episodes):
 
 def test_repair_attempt_recovers(play_episodes):
     script = [fence("put(board, 'washer', 'green', 7, 3)\n" + "\n".join(GOLD[1:])), fence("\n".join(GOLD))]
-    [result] = play_episodes([instance(0, script)], dict(SINGLE, name="repair", repair_attempts=1))
+    [result] = play_episodes([instance(0, script)], dict(SINGLE, name="repair", attempts=2))
     s = result["scores"]["episode scores"]
     assert outcome(result["scores"]) == "success" and s["Main Score"] == 100.0
     assert len(result["interactions"]["sartco_attempts"]) == 2

@@ -104,8 +104,8 @@ def test_feedback_counts_lines_in_the_builders_code():
 def test_feedback_for_no_code_and_the_attempts_field():
     text = feedback_message(error="parse_error", message="no code found in the answer", cells={})
     assert "No code was found" in text and "⬜️" not in text
-    assert max_attempts({}) == 1 and max_attempts({"attempts": 3}) == 3 and max_attempts({"repair_attempts": 1}) == 2
-    for bad in ({"attempts": 0}, {"attempts": "3"}, {"attempts": True}, {"repair_attempts": -1}):
+    assert max_attempts({}) == 1 and max_attempts({"attempts": 3}) == 3
+    for bad in ({"attempts": 0}, {"attempts": "3"}, {"attempts": True}, {"attempts": -1}):
         with pytest.raises(ValueError, match="must be an integer"):
             max_attempts(dict(bad, name="bad"))
 
