@@ -10,7 +10,7 @@ Programmatic players (sartco.clem.dialogue_answers): `mock` and `rulebased` desc
 episode's template instruction; as builders both are the rule-based follower reading the
 describer's text (never gold code).
 
-Episode = one instance of in/instances.json (instancegenerator.py):
+Episode = one instance of in/instances.json (instancegenerator.py; sartco.episode.DescribeEpisode):
   describer_prompt      the Describer's prompt
   builder_prompt        the Builder's prompt with INSTRUCTION_SLOT where the instruction goes
   template_instruction  what the programmatic describer writes
@@ -42,7 +42,7 @@ from sartco.clem.dialogue_answers import builder_answers, describer_answers
 from sartco.clem.outcomes import log_outcome, set_attempts_outcome
 from sartco.clem.players import Builder
 from sartco.clem.transcript import MarkdownTranscript
-from sartco.episode import ATTEMPTS_KEY, BUILD_KEY, DIALOGUE_KEY
+from sartco.episode import ATTEMPTS_KEY, BUILD_KEY, DIALOGUE_KEY, DescribeEpisode
 from sartco.world import ErrorCode
 
 DESCRIBER_PARSERS = {"instruction": parse_instruction, "answer": parse_answer, "review": parse_review}
@@ -51,7 +51,7 @@ DESCRIBER_PARSERS = {"instruction": parse_instruction, "answer": parse_answer, "
 class CobotDescribe(MarkdownTranscript, DialogueGameMaster):
 
     def _on_setup(self, **instance):
-        self.episode = instance
+        self.episode: DescribeEpisode = instance
         self.settings = settings_of(self.experiment)
         self.dialogue = Dialogue(DialogueLog(self.settings.mode, self.settings.questions, self.settings.corrections))
         describer_model = self.player_models[0]
@@ -135,3 +135,4 @@ class CobotDescribe(MarkdownTranscript, DialogueGameMaster):
 class CobotDescribeBenchmark(benchmark.BuildBenchmark):
     master_class = CobotDescribe
     scorer_class = DialogueScorer
+    episode_fields = benchmark.json_fields(DescribeEpisode)

@@ -5,21 +5,22 @@ collects it and, after the last instruction, runs it through sartco.program and 
 result (sartco.clem.building); the scorer turns the recorded build into numbers
 (sartco.clem.scoring). The builder never sees the target board.
 
-Episode = one instance of in/instances.json:
-  prompt        the initial prompt (environment, examples, context), sent with the first turn
-  turns         the text of each turn: one for single-turn tasks, one per put for multi-turn
+Episode = one instance of in/instances.json (sartco.episode.InstructEpisode):
+  turns         the text of each turn: one for single-turn tasks, one per put for multi-turn; the
+                first holds the prompt (environment, examples, context)
   instructions  the bare instruction texts (what the rule-based follower reads)
   given_code    code the builder is given and the program starts with (repetition: the object function)
   gold_code     the gold answer in the task's code style (exact match, CodeBLEU)
   gold_turns    the gold code of each turn (what `mock` answers)
   target        the target board in canonical cells form; rows, cols; task
 Multi-turn: the builder's code accumulates over the turns and is executed once at the end.
-Feedback experiments (experiment field `attempts` N > 1, logged under `sartco_max_attempts`): after a failed attempt the builder gets sartco.clem.feedback's message (error code
-and message, or "the board you built differs", with the built board as grid_text; never the
-target) and answers with the complete corrected code, run on a fresh board, up to N attempts.
-An answer without code is then a failed attempt (parse_error) like any other; the episode is
-aborted only when no attempt held code. Every attempt's record is logged under
-`sartco_attempts`, the last one under `sartco_build` (scored).
+Feedback experiments (experiment field `attempts` N > 1, logged under `sartco_max_attempts`):
+after a failed attempt the builder gets sartco.clem.feedback's message (error code and message,
+or "the board you built differs", with the built board as grid_text; never the target) and
+answers with the complete corrected code, run on a fresh board, up to N attempts. An answer
+without code is then a failed attempt (parse_error) like any other; the episode is aborted only
+when no attempt held code. Every attempt's record is logged under `sartco_attempts`, the last one
+under `sartco_build` (scored).
 
 The paper protocol (game entry cobot_instruct_paper, in/instances_paper.json; instance field
 `protocol: "paper"`): the turns are the authors' user messages (`messages`), `mock` answers the
@@ -40,13 +41,13 @@ from sartco.clem.paper import PAPER_EPISODE_FIELDS, PaperScorer, finish_paper, i
 from sartco.clem.parsing import parse_code
 from sartco.clem.players import Builder
 from sartco.clem.transcript import MarkdownTranscript
-from sartco.episode import ATTEMPTS_KEY, MAX_ATTEMPTS_KEY
+from sartco.episode import ATTEMPTS_KEY, MAX_ATTEMPTS_KEY, InstructEpisode, PaperProtocolEpisode
 
 
 class CobotInstruct(MarkdownTranscript, DialogueGameMaster):
 
     def _on_setup(self, **instance):
-        self.instance = instance
+        self.instance: InstructEpisode | PaperProtocolEpisode = instance
         self.paper = is_paper(instance)
         self.turns: list[str] = instance["messages"] if self.paper else instance["turns"]
         self.codes: list[str] = []  # the code of each turn (paper protocol: the raw answers)
@@ -96,7 +97,7 @@ class CobotInstruct(MarkdownTranscript, DialogueGameMaster):
 class CobotInstructBenchmark(benchmark.BuildBenchmark):
     master_class = CobotInstruct
     scorer_class = PaperScorer  # BuildScorer's scores, plus the paper's in a paper-protocol episode
-    episode_fields = {**benchmark.EPISODE_FIELDS, "turns": list, "gold_turns": list}  # read by _on_setup
+    episode_fields = benchmark.json_fields(InstructEpisode)
 
     def fields_of(self, episode: dict) -> dict:
         """A paper-protocol episode carries the authors' messages and gold answers instead of turns."""
