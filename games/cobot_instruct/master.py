@@ -99,6 +99,7 @@ class CobotInstructBenchmark(benchmark.BuildBenchmark):
     scorer_class = PaperScorer  # BuildScorer's scores, plus the paper's in a paper-protocol episode
     episode_fields = benchmark.json_fields(InstructEpisode)
 
-    def fields_of(self, episode: dict) -> dict:
+    @classmethod
+    def fields_of(cls, episode: dict) -> dict:
         """A paper-protocol episode carries the authors' messages and gold answers instead of turns."""
-        return PAPER_EPISODE_FIELDS if is_paper(episode) else self.episode_fields
+        return PAPER_EPISODE_FIELDS if is_paper(episode) else cls.episode_fields

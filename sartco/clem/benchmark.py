@@ -130,9 +130,10 @@ class BuildBenchmark(GameBenchmark):
                 print(f"clem run -g {game_spec.game_name}: {error}", file=sys.stderr)
                 raise SystemExit(2) from None  # not an Exception: clem's loop does not log and go on
 
-    def fields_of(self, episode: dict) -> dict:
+    @classmethod
+    def fields_of(cls, episode: dict) -> dict:
         """The fields (name -> JSON type) the master reads from this episode."""
-        return self.episode_fields
+        return cls.episode_fields
 
     def create_game_master(self, experiment: dict, player_models):
         return self.master_class(self.game_spec, experiment, player_models)
