@@ -18,6 +18,8 @@ live inside a game folder). Reuse these from any game whose player writes code:
 - packaged                             the backends and model entries in clem/backends/ that
                                        clemcore finds wherever sartco is installed
 - benchmark.BuildBenchmark             the GameBenchmark base; checks the instance file up front
+                                       against the game's episode type (json_fields, sartco.episode)
+- episodes.board_fields / instruct_episode   the episode fields the generators write
 - transcript.MarkdownTranscript        messages as they read (code as code) in transcript.html
 - batching.OpenAIBatchingBackend       `openai_batching`: concurrent requests to an OpenAI-compatible server
 - stub_server.StubServer, benchrun     a local stub model server; `sartco bench-run`
