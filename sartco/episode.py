@@ -41,6 +41,9 @@ DIALOGUE_SCORES = (ES_AT_1, ES_AT_N, CELL_F1_AT_1, CELL_F1_AT_N, FIRST_SUCCESS_R
 ROUND_PREFIX = "ES Round "
 # the describer's instruction (sartco.clem.describer)
 DESCRIBER_ANSWERED = "Describer Answered"
+INSTRUCTION_WORDS = "Instruction Words"
+INSTRUCTION_CHARACTERS = "Instruction Characters"
+OBJECT_NAMED = "Object Named"
 # the paper protocol (sartco.clem.paper): shares of the dialogue's turns, 0..1
 PAPER_SCORES = {"em": "Paper EM", "cb": "Paper CB", "es": "Paper ES"}
 
@@ -53,6 +56,7 @@ def round_score(k: int) -> str:
 # ---------------------------------------------------------------------------- interactions.json keys
 BUILD_KEY = "sartco_build"            # one build's record (sartco.clem.building.BuildRecord.to_json)
 ATTEMPTS_KEY = "sartco_attempts"      # every build of an episode, in order
+MAX_ATTEMPTS_KEY = "sartco_max_attempts"  # the attempts the experiment allows (sartco.clem.feedback.max_attempts)
 INSTRUCTION_KEY = "sartco_instruction"  # the describer's instruction: {"text", "error", "combo_name"}
 DIALOGUE_KEY = "sartco_dialogue"      # the describe dialogue's log
 PAPER_KEY = "sartco_paper"            # the paper protocol's reading: {"em", "cb", "es", "turns": [...]}
@@ -60,26 +64,108 @@ MARKDOWN_KEY = "markdown"             # clemcore renders the transcript's messag
 
 
 # ---------------------------------------------------------------------------- instance records
-class BuildEpisode(TypedDict):
-    """The fields of every episode that ends in a build (sartco.clem.episodes.board_fields), plus
-    clemcore's game_id."""
-    game_id: int
-    board_id: str
-    board_type: str        # sartco.dataset.BOARD_TYPES
-    object_type: str       # sartco.dataset.OBJECT_TYPES
-    combo_name: str
+# An instance file: {"experiments": [Experiment, ...]}, each experiment's "game_instances" a list
+# of episodes. The fields below are what the generators write; the games' benchmarks check an
+# episode's fields against its type before `clem run` plays (sartco.clem.benchmark.json_fields).
+
+class PlayedEpisode(TypedDict):
+    """What the game masters and BuildScorer read from every episode that ends in a build."""
+    game_id: int           # clemcore's
     task: str              # sartco.dataset.TASKS
     rows: int
     cols: int
     target: dict           # sartco.world.Board.to_json
     given_code: str        # the code the program starts with (repetition: the object function)
-    gold_code: str         # the gold answer in the task's style
+    gold_code: str         # the gold answer in the task's style (exact match, CodeBLEU)
+
+
+class BuildEpisode(PlayedEpisode):
+    """An episode of one board record of a dataset (sartco.clem.episodes.board_fields)."""
+    board_id: str
+    board_type: str        # sartco.dataset.BOARD_TYPES
+    object_type: str       # sartco.dataset.OBJECT_TYPES
+    combo_name: str
 
 
 class InstructEpisode(BuildEpisode):
     """A cobot_instruct episode of our protocol: the builder's messages and what mock answers."""
     source: str            # sartco.dataset.SOURCES
-    turns: list            # the builder's messages: the prompt, then one per later step
-    instructions: list     # the instruction text of each turn
-    gold_turns: list       # the gold answer of each turn (the mock player's answers)
-    examples: list         # ids of the in-context examples
+    turns: list[str]       # the builder's messages: the prompt with the first step, then one per later step
+    instructions: list[str]  # the instruction text of each turn (what the rule-based follower reads)
+    gold_turns: list[str]  # the gold answer of each turn (the mock player's answers)
+    examples: list[str]    # ids of the in-context examples
+
+
+class DescribeEpisode(BuildEpisode):
+    """A cobot_describe episode: the describer's prompt, the builder's prompt with a slot for the
+    instruction (sartco.clem.describer.INSTRUCTION_SLOT), what the mock describer writes."""
+    example_ids: list[str]  # ids of the builder prompt's in-context examples
+    describer_prompt: str
+    builder_prompt: str
+    template_instruction: str
+    record: dict           # the board record (what `sartco import-instructions` reads back)
+
+
+class PaperProtocolEpisode(PlayedEpisode):
+    """A cobot_instruct_paper episode: sartco.paper.episodes.PaperEpisode.to_json() plus the board
+    fields our own build reads (sartco.clem.paper.instance_fields)."""
+    id: str
+    file: str              # the published file (stem) of the sample
+    sample: str
+    variant: str
+    cell: dict             # the Table 3 cell: board, object, task, source, instructions
+    messages: list[str]    # the authors' user messages, one per turn
+    gold: list[dict]       # the authors' gold code of each turn
+    given_function: str
+    examples_from: str
+    mock_answers: list[str]  # the gold in the authors' label format (what mock answers)
+    protocol: str          # sartco.paper.PROTOCOL
+    board_id: str
+    board_type: str
+    object_type: str
+
+
+class Experiment(TypedDict):
+    """What every experiment of the games records besides clemcore's name and game_instances."""
+    board_type: str
+    object_type: str
+    task: str
+    source: str
+    split: str             # sartco.dataset.SPLITS
+
+
+class _Feedback(TypedDict, total=False):
+    attempts: int          # attempts per episode, the first included (sartco.clem.feedback)
+    feedback_of: str       # the experiment it repeats with feedback
+
+
+class InstructExperiment(Experiment, _Feedback):
+    """cobot_instruct's experiments (instancegenerator.py)."""
+    ablation: dict | None  # {"kind": "examples" | "without", "value"}; None in the Table 3 cells
+    dataset: dict          # the dataset's version, source, seed, path, generator seed, examples
+
+
+class _Dialogue(TypedDict, total=False):
+    mode: str              # sartco.clem.dialogue.MODES; absent: oneshot
+    questions: int
+    corrections: int
+
+
+class DescribeExperiment(Experiment, _Dialogue):
+    """cobot_describe's experiments. Unlike cobot_instruct's, `dataset` is the dataset's version
+    alone, beside its seed and the in-context examples' count and seed."""
+    dataset: str
+    dataset_seed: int
+    examples: int
+    example_seed: int
+
+
+class PaperExperiment(Experiment):
+    """cobot_instruct_paper's experiments (sartco.clem.paper.experiment_fields)."""
+    protocol: str
+    instructions: str
+    variant: str
+    file: str
+    ablation: None
+    examples_from: str
+    generation: dict       # the paper's generation settings (sartco.paper.table3.generation)

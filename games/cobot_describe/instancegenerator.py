@@ -30,10 +30,12 @@ from pathlib import Path
 
 from clemcore.clemgame import GameInstanceGenerator
 
-from sartco.errors import UserError
 from sartco.clem.describer import INSTRUCTION_SLOT
 from sartco.clem.dialogue import DEFAULT_CORRECTIONS, DEFAULT_QUESTIONS, MODES, clarify_note
-from sartco.clem.episodes import DESCRIBED_TASK, board_fields
+from sartco.clem.episodes import board_fields
+from sartco.dataset import BOARD_KINDS, DESCRIBED_TASK, BoardKind
+from sartco.episode import DescribeEpisode, DescribeExperiment
+from sartco.errors import UserError
 from sartco.instances.examples import select_examples
 from sartco.instances.storage import load_dataset
 from sartco.instances.prompts import builder_prompt, describer_prompt, instruction_text
@@ -41,17 +43,11 @@ from sartco.instances.prompts import builder_prompt, describer_prompt, instructi
 GAME_DIR = Path(__file__).resolve().parent
 REPO = GAME_DIR.parents[1]
 
-# experiment name -> (board_type, object_type, dataset file stem, builder task)
-EXPERIMENTS = {
-    "simple_boards": ("simple", "simple", "simple_simple", DESCRIBED_TASK["simple"]),
-    "regular_boards_simple_objects": ("regular", "simple", "regular_simple", DESCRIBED_TASK["regular"]),
-    "regular_boards_complex_objects": ("regular", "complex", "regular_complex", DESCRIBED_TASK["regular"]),
-}
 
 
-def split_records(dataset: Path, files: dict[str, list[dict]], stem: str, split: str) -> list[dict]:
+def split_records(dataset: Path, files: dict[str, list[dict]], kind: BoardKind, split: str) -> list[dict]:
     """The records of one split (files: from sartco.instances.storage.load_dataset)."""
-    name = f"{stem}_{split}.json"
+    name = kind.dataset_file(split)
     if name not in files:
         sys.exit(f"instancegenerator: {dataset / name}: missing (generate the dataset first: sartco generate)")
     return files[name]
@@ -78,27 +74,26 @@ class CobotDescribeInstanceGenerator(GameInstanceGenerator):
         self.instances["seed"] = seed
         game_id = 0
         for mode in MODES:
-            for kind, (board_type, object_type, stem, task) in EXPERIMENTS.items():
-                experiment = self.add_experiment(kind if mode == "oneshot" else f"{kind}_{mode}")
-                experiment.update(board_type=board_type, object_type=object_type, task=task, source="describer",
-                                  split="test", dataset=manifest["version"], dataset_seed=manifest["seed"],
-                                  examples=examples, example_seed=seed)
+            for kind in BOARD_KINDS:  # the builder's task: the paper's for model-written instructions
+                task = DESCRIBED_TASK[kind.board]
+                experiment = self.add_experiment(kind.experiment if mode == "oneshot" else f"{kind.experiment}_{mode}")
+                experiment.update(DescribeExperiment(board_type=kind.board, object_type=kind.object, task=task,
+                                                     source="describer", split="test", dataset=manifest["version"],
+                                                     dataset_seed=manifest["seed"], examples=examples,
+                                                     example_seed=seed))
                 if mode != "oneshot":  # oneshot experiments keep the fields they always had
                     experiment.update(mode=mode, questions=questions if "clarify" in mode else 0,
                                       corrections=corrections if "correct" in mode else 0)
-                pool = split_records(dataset, files, stem, "train")
-                for record in spread(split_records(dataset, files, stem, "test"), per_experiment):
-                    instance = self.add_game_instance(experiment, game_id)
-                    instance.update(board_fields(record, task))
+                pool = split_records(dataset, files, kind, "train")
+                for record in spread(split_records(dataset, files, kind, "test"), per_experiment):
                     shots = select_examples(record, pool, k=examples, rng=seed)
-                    instance["example_ids"] = [r["id"] for r in shots]
-                    instance["describer_prompt"] = describer_prompt(record)
                     prompt = builder_prompt(record, task, shots, instruction=INSTRUCTION_SLOT)
                     if "clarify" in mode:
                         prompt = f"{prompt.rstrip()}\n\n{clarify_note(questions)}\n"
-                    instance["builder_prompt"] = prompt
-                    instance["template_instruction"] = instruction_text(record, task, "template")
-                    instance["record"] = record
+                    self.add_game_instance(experiment, game_id).update(DescribeEpisode(
+                        game_id=game_id, **board_fields(record, task), example_ids=[r["id"] for r in shots],
+                        describer_prompt=describer_prompt(record), builder_prompt=prompt,
+                        template_instruction=instruction_text(record, task, "template"), record=record))
                     game_id += 1
 
 

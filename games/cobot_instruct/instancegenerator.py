@@ -62,11 +62,13 @@ from pathlib import Path
 
 from clemcore.clemgame import GameInstanceGenerator
 
+from sartco.clem.episodes import instruct_episode
+from sartco.dataset import BOARD_KINDS, DESCRIBED_TASK, REGULAR_COMPLEX, REGULAR_SIMPLE, SIMPLE, BoardKind, board_kind
+from sartco.episode import InstructExperiment
 from sartco.errors import UserError
-from sartco.clem.episodes import DESCRIBED_TASK, board_fields
 from sartco.instances.examples import MAX_EXAMPLES, select_examples
 from sartco.instances.storage import load_dataset
-from sartco.instances.prompts import SECTIONS, builder_prompt, builder_turn, gold_code, instruction_text
+from sartco.instances.prompts import SECTIONS
 
 GAME_DIR = Path(__file__).resolve().parent
 REPO = GAME_DIR.parents[1]
@@ -76,14 +78,13 @@ FEEDBACK_ATTEMPTS = 3   # attempts per episode in the feedback experiments
 FEEDBACK_SUFFIX = "_feedback"
 SMOKE_EPISODES = 2      # episodes per Table 3 cell in in/instances_smoke.json
 
-BOARDS = {"sb_so": ("simple", "simple"), "rb_so": ("regular", "simple"), "rb_co": ("regular", "complex")}
-# the cells of the paper's Table 3: (board/object, task, sources from the generated data, from the published data)
+# the cells of the paper's Table 3: (board kind, task, sources from the generated data, from the published data)
 CELLS = [
-    ("sb_so", "first_order", ["template"], []),
-    ("sb_so", "sequence_function", ["template"], ["human"]),
-    ("sb_so", "optimal_function", ["template"], ["human", "codellama", "gpt4", "claude"]),
-    ("rb_so", "repetition", ["template"], ["human", "codellama", "gpt4", "claude"]),
-    ("rb_co", "repetition", ["template"], ["human"]),
+    (SIMPLE, "first_order", ["template"], []),
+    (SIMPLE, "sequence_function", ["template"], ["human"]),
+    (SIMPLE, "optimal_function", ["template"], ["human", "codellama", "gpt4", "claude"]),
+    (REGULAR_SIMPLE, "repetition", ["template"], ["human", "codellama", "gpt4", "claude"]),
+    (REGULAR_COMPLEX, "repetition", ["template"], ["human"]),
 ]
 
 
@@ -97,29 +98,11 @@ def dataset_info(manifest: dict, path: Path, seed: int, n_examples: int, example
     return {**info, "generator_seed": seed, "n_examples": n_examples}
 
 
-def records(files: dict, board: str, split: str) -> list[dict]:
-    board_type, object_type = BOARDS[board]
-    name = f"{board_type}_{object_type}_{split}.json"
+def records(files: dict, kind: BoardKind, split: str) -> list[dict]:
+    name = kind.dataset_file(split)
     if name not in files:
         raise UserError(f"dataset has no file {name}")
     return files[name]
-
-
-def episode(record: dict, task: str, source: str, examples: list[dict], sections=SECTIONS) -> dict:
-    """One game instance: the board's fields (sartco.clem.episodes.board_fields: target,
-    given_code, gold_code, ...), what the builder is told, and what `mock` answers per turn."""
-    code = record["code"]
-    if task == "first_order":
-        steps = instruction_text(record, task, source)
-        turns = [builder_prompt(record, task, examples, sections, source, step=0)]
-        turns += [builder_turn(record, k, source) for k in range(1, len(steps))]
-        instructions, gold_turns = list(steps), list(code["first_order"]["steps"])
-    else:
-        turns = [builder_prompt(record, task, examples, sections, source)]
-        instructions = [instruction_text(record, task, source)]
-        gold_turns = [gold_code(record, task)]
-    return {**board_fields(record, task), "source": source, "turns": turns, "instructions": instructions,
-            "gold_turns": gold_turns, "examples": [ex["id"] for ex in examples]}
 
 
 class PaperInstanceGenerator(GameInstanceGenerator):
@@ -139,10 +122,10 @@ class PaperInstanceGenerator(GameInstanceGenerator):
             cells.setdefault((ep.file, ep.variant), []).append(ep.to_json())
         self.instances["dataset"] = {"protocol": PROTOCOL, "published": os.path.relpath(published_dir, REPO),
                                      "generated": os.path.relpath(dataset_dir, REPO)}
-        names = {types: board for board, types in BOARDS.items()}
         for episodes in cells.values():
             cell = episodes[0]["cell"]
-            exp = self.add_experiment(f"{PROTOCOL}_{names[cell['board'], cell['object']]}_{cell['task']}_{cell['source']}")
+            kind = board_kind(cell["board"], cell["object"])
+            exp = self.add_experiment(f"{PROTOCOL}_{kind.cell}_{cell['task']}_{cell['source']}")
             exp.update(experiment_fields(episodes[0]))
             exp.move_to_end("game_instances")
             for game_id, episode in enumerate(episodes):
@@ -157,16 +140,15 @@ class CobotInstructInstanceGenerator(GameInstanceGenerator):
         super().__init__(str(GAME_DIR))
         self.feedback_attempts = feedback_attempts
 
-    def experiment(self, name: str, board: str, task: str, source: str, split: str, dataset: dict,
+    def experiment(self, name: str, kind: BoardKind, task: str, source: str, split: str, dataset: dict,
                    ablation: dict | None = None):
-        board_type, object_type = BOARDS[board]
         feedback = {}
         if self.feedback_attempts is not None:
             feedback = {"attempts": self.feedback_attempts, "feedback_of": name}
             name += FEEDBACK_SUFFIX
         exp = self.add_experiment(name)
-        exp.update(board_type=board_type, object_type=object_type, task=task, source=source, split=split,
-                   ablation=ablation, **feedback, dataset=dataset)
+        exp.update(InstructExperiment(board_type=kind.board, object_type=kind.object, task=task, source=source,
+                                      split=split, ablation=ablation, **feedback, dataset=dataset))
         exp.move_to_end("game_instances")
         return exp
 
@@ -174,7 +156,7 @@ class CobotInstructInstanceGenerator(GameInstanceGenerator):
         for game_id, record in enumerate(items):
             examples = select_examples(record, pool, k, seed) if "examples" in sections else []
             inst = self.add_game_instance(exp, game_id)
-            inst.update(episode(record, task, source, examples, sections))
+            inst.update(instruct_episode(record, task, source, examples, sections))
 
     def on_generate(self, seed: int, dataset_dir: Path, published_dir: Path | None = None,
                     n_examples: int = N_EXAMPLES, ablation_episodes: int = ABLATION_EPISODES,
@@ -186,44 +168,44 @@ class CobotInstructInstanceGenerator(GameInstanceGenerator):
         manifest, files = load_dataset(dataset_dir)
         info = dataset_info(manifest, dataset_dir, seed, n_examples)
         self.instances["dataset"] = info
-        pools = {board: records(files, board, "train") for board in BOARDS}
+        pools = {kind: records(files, kind, "train") for kind in BOARD_KINDS}
         if describers_dir is not None:
             self.add_described(describers_dir, info, pools, seed, n_examples)
             return
         if part == "train":
-            for board, task, _, _ in CELLS:
-                exp = self.experiment(f"{board}_{task}_template_train", board, task, "template", "train", info)
-                self.add_episodes(exp, pools[board][:train_episodes or None], task, "template", pools[board], seed,
+            for kind, task, _, _ in CELLS:
+                exp = self.experiment(f"{kind.cell}_{task}_template_train", kind, task, "template", "train", info)
+                self.add_episodes(exp, pools[kind][:train_episodes or None], task, "template", pools[kind], seed,
                                   n_examples)
             return
         if part == "ablations":
-            for board, task, _, _ in CELLS:
-                val = records(files, board, "val")[:ablation_episodes]
+            for kind, task, _, _ in CELLS:
+                val = records(files, kind, "val")[:ablation_episodes]
                 for k in range(MAX_EXAMPLES + 1):
-                    exp = self.experiment(f"{board}_{task}_template_examples_{k}", board, task, "template", "val",
+                    exp = self.experiment(f"{kind.cell}_{task}_template_examples_{k}", kind, task, "template", "val",
                                           info, {"kind": "examples", "value": k})
-                    self.add_episodes(exp, val, task, "template", pools[board], seed, k)
+                    self.add_episodes(exp, val, task, "template", pools[kind], seed, k)
                 for section in SECTIONS:
                     kept = tuple(s for s in SECTIONS if s != section)
-                    exp = self.experiment(f"{board}_{task}_template_without_{section}", board, task, "template",
+                    exp = self.experiment(f"{kind.cell}_{task}_template_without_{section}", kind, task, "template",
                                           "val", info, {"kind": "without", "value": section})
-                    self.add_episodes(exp, val, task, "template", pools[board], seed, n_examples, kept)
+                    self.add_episodes(exp, val, task, "template", pools[kind], seed, n_examples, kept)
             return
         if published_dir is None:
-            for board, task, sources, _ in CELLS:
+            for kind, task, sources, _ in CELLS:
                 for source in sources:
-                    exp = self.experiment(f"{board}_{task}_{source}", board, task, source, "test", info)
-                    items = records(files, board, "test")[:per_experiment]
-                    self.add_episodes(exp, items, task, source, pools[board], seed, n_examples)
+                    exp = self.experiment(f"{kind.cell}_{task}_{source}", kind, task, source, "test", info)
+                    items = records(files, kind, "test")[:per_experiment]
+                    self.add_episodes(exp, items, task, source, pools[kind], seed, n_examples)
             return
         pub_manifest, pub_files = load_dataset(published_dir)
         pub_info = dataset_info(pub_manifest, published_dir, seed, n_examples, examples_from=info)
         self.instances["dataset"] = pub_info
-        for board, task, _, sources in CELLS:
+        for kind, task, _, sources in CELLS:
             for source in sources:
-                items = [r for r in records(pub_files, board, "test") if source in r["instructions"]]
-                exp = self.experiment(f"{board}_{task}_{source}", board, task, source, "test", pub_info)
-                self.add_episodes(exp, items[:per_experiment], task, source, pools[board], seed, n_examples)
+                items = [r for r in records(pub_files, kind, "test") if source in r["instructions"]]
+                exp = self.experiment(f"{kind.cell}_{task}_{source}", kind, task, source, "test", pub_info)
+                self.add_episodes(exp, items[:per_experiment], task, source, pools[kind], seed, n_examples)
 
     def add_described(self, describers_dir: Path, info: dict, pools: dict, seed: int, n_examples: int):
         """Experiments from a `sartco import-instructions` dataset: one per describer model (an
@@ -235,13 +217,13 @@ class CobotInstructInstanceGenerator(GameInstanceGenerator):
         d_info = dataset_info(manifest, describers_dir, seed, n_examples, examples_from=info)
         self.instances["dataset"] = d_info
         for source in manifest["config"]["instruction_sources"]:
-            for board, (board_type, _) in BOARDS.items():
-                task = DESCRIBED_TASK[board_type]
-                items = [r for r in records(files, board, "test") if source in r["instructions"]]
+            for kind in BOARD_KINDS:
+                task = DESCRIBED_TASK[kind.board]
+                items = [r for r in records(files, kind, "test") if source in r["instructions"]]
                 if items:
-                    exp = self.experiment(f"{board}_{task}_{source}".replace("/", "_"), board, task, source,
+                    exp = self.experiment(f"{kind.cell}_{task}_{source}".replace("/", "_"), kind, task, source,
                                           "test", d_info)
-                    self.add_episodes(exp, items, task, source, pools[board], seed, n_examples)
+                    self.add_episodes(exp, items, task, source, pools[kind], seed, n_examples)
 
 
 def main(argv=None) -> int:

@@ -5,22 +5,22 @@ collects it and, after the last instruction, runs it through sartco.program and 
 result (sartco.clem.building); the scorer turns the recorded build into numbers
 (sartco.clem.scoring). The builder never sees the target board.
 
-Episode = one instance of in/instances.json:
-  prompt        the initial prompt (environment, examples, context), sent with the first turn
-  turns         the text of each turn: one for single-turn tasks, one per put for multi-turn
+Episode = one instance of in/instances.json (sartco.episode.InstructEpisode):
+  turns         the text of each turn: one for single-turn tasks, one per put for multi-turn; the
+                first holds the prompt (environment, examples, context)
   instructions  the bare instruction texts (what the rule-based follower reads)
   given_code    code the builder is given and the program starts with (repetition: the object function)
   gold_code     the gold answer in the task's code style (exact match, CodeBLEU)
   gold_turns    the gold code of each turn (what `mock` answers)
   target        the target board in canonical cells form; rows, cols; task
 Multi-turn: the builder's code accumulates over the turns and is executed once at the end.
-Feedback experiments (experiment field `attempts` N > 1; the older `repair_attempts` n means
-N = n + 1): after a failed attempt the builder gets sartco.clem.feedback's message (error code
-and message, or "the board you built differs", with the built board as grid_text; never the
-target) and answers with the complete corrected code, run on a fresh board, up to N attempts.
-An answer without code is then a failed attempt (parse_error) like any other; the episode is
-aborted only when no attempt held code. Every attempt's record is logged under
-`sartco_attempts`, the last one under `sartco_build` (scored).
+Feedback experiments (experiment field `attempts` N > 1, logged under `sartco_max_attempts`):
+after a failed attempt the builder gets sartco.clem.feedback's message (error code and message,
+or "the board you built differs", with the built board as grid_text; never the target) and
+answers with the complete corrected code, run on a fresh board, up to N attempts. An answer
+without code is then a failed attempt (parse_error) like any other; the episode is aborted only
+when no attempt held code. Every attempt's record is logged under `sartco_attempts`, the last one
+under `sartco_build` (scored).
 
 The paper protocol (game entry cobot_instruct_paper, in/instances_paper.json; instance field
 `protocol: "paper"`): the turns are the authors' user messages (`messages`), `mock` answers the
@@ -33,42 +33,29 @@ from clemcore.clemgame import DialogueGameMaster, Player
 from clemcore.clemgame.errors import ParseError
 
 from sartco.clem import benchmark  # the module, not the class: one GameBenchmark subclass per master.py
-from sartco.clem.builder import Builder, rulebased_code
-from sartco.clem.building import ATTEMPTS_KEY, BuildRecord, build_for, finish_build, log_build, parse_failure_for
+from sartco.clem.answers import instruct_answers
+from sartco.clem.building import BuildRecord, build_for, finish_build, log_build, parse_failure_for
 from sartco.clem.feedback import feedback_for, max_attempts
 from sartco.clem.outcomes import log_outcome
 from sartco.clem.paper import PAPER_EPISODE_FIELDS, PaperScorer, finish_paper, is_paper
 from sartco.clem.parsing import parse_code
+from sartco.clem.players import Builder
 from sartco.clem.transcript import MarkdownTranscript
+from sartco.episode import ATTEMPTS_KEY, MAX_ATTEMPTS_KEY, InstructEpisode, PaperProtocolEpisode
 
 
 class CobotInstruct(MarkdownTranscript, DialogueGameMaster):
 
     def _on_setup(self, **instance):
-        self.instance = instance
+        self.instance: InstructEpisode | PaperProtocolEpisode = instance
         self.paper = is_paper(instance)
         self.turns: list[str] = instance["messages"] if self.paper else instance["turns"]
         self.codes: list[str] = []  # the code of each turn (paper protocol: the raw answers)
         self.attempts: list[BuildRecord] = []
         self.max_attempts = max_attempts(self.experiment)
-        script = instance.get("script") or (instance["mock_answers"] if self.paper else None)
-        self.builder = Builder(self.player_models[0], gold_turns=instance.get("gold_turns", ()),
-                               rulebased=None if self.paper else self._follow, script=script)
-        self.add_player(self.builder, initial_prompt=instance.get("prompt") or None,
-                        initial_context=self.turns[0])
-
-    def _follow(self, turn: int, context: dict) -> str:
-        """What the rule-based follower writes for this turn (model `rulebased`)."""
-        from sartco.follower import FollowError, follow_turn
-        i = self.instance
-        rows, cols = i["rows"], i["cols"]
-        if i["task"] == "first_order" and len(i["instructions"]) > 1 and not self.attempts:  # one turn's puts
-            k = min(turn, len(i["instructions"]) - 1)
-            try:
-                return follow_turn(i["instructions"][k], i["instructions"][:k], rows, cols)
-            except FollowError as error:
-                return f"# I cannot follow this instruction: {error}"
-        return rulebased_code(i["instructions"], i["task"], i.get("given_code", ""), rows, cols)
+        model = self.player_models[0]
+        self.builder = Builder(model, instruct_answers(model.name, instance, paper=self.paper))
+        self.add_player(self.builder, initial_context=self.turns[0])
 
     def _parse_response(self, player: Player, response: str) -> str:
         return response if self.paper else parse_code(response)  # the paper protocol reads answers at the end
@@ -101,6 +88,7 @@ class CobotInstruct(MarkdownTranscript, DialogueGameMaster):
         self.set_context_for(self.builder, feedback_for(record, attempts_left=left))
 
     def _on_after_game(self):
+        self.log_key(MAX_ATTEMPTS_KEY, self.max_attempts)  # what the scorer (and so the report) reads
         if self.max_attempts > 1:
             self.log_key(ATTEMPTS_KEY, [a.to_json() for a in self.attempts])
         log_outcome(self)
@@ -109,8 +97,9 @@ class CobotInstruct(MarkdownTranscript, DialogueGameMaster):
 class CobotInstructBenchmark(benchmark.BuildBenchmark):
     master_class = CobotInstruct
     scorer_class = PaperScorer  # BuildScorer's scores, plus the paper's in a paper-protocol episode
-    episode_fields = {**benchmark.EPISODE_FIELDS, "turns": list, "gold_turns": list}  # read by _on_setup
+    episode_fields = benchmark.json_fields(InstructEpisode)
 
-    def fields_of(self, episode: dict) -> dict:
+    @classmethod
+    def fields_of(cls, episode: dict) -> dict:
         """A paper-protocol episode carries the authors' messages and gold answers instead of turns."""
-        return PAPER_EPISODE_FIELDS if is_paper(episode) else self.episode_fields
+        return PAPER_EPISODE_FIELDS if is_paper(episode) else cls.episode_fields

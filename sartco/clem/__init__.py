@@ -6,7 +6,10 @@ live inside a game folder). Reuse these from any game whose player writes code:
 - building.build_for / parse_failure_for / finish_build / BuildRecord   execute, compare, record, end
 - feedback.feedback_for / max_attempts   the one message after a failed attempt (feedback
                                        experiments: execution facts only, never the target)
-- builder.Builder                      the Builder player (mock = gold, rulebased, human)
+- players.Builder / SourcedPlayer      the players; a built-in player's answers come from one
+                                       answer source chosen when it is made (answers: Scripted,
+                                       GoldCode = mock, InstructFollower = rulebased;
+                                       dialogue_answers: cobot_describe's mock describer and follower)
 - scoring.BuildScorer                  scores.json from the recorded build
 - paper.finish_paper / PaperScorer     the paper protocol (cobot_instruct_paper): the authors' per-turn
                                        reading and scores at the end of a dialogue, ours beside them
@@ -15,6 +18,8 @@ live inside a game folder). Reuse these from any game whose player writes code:
 - packaged                             the backends and model entries in clem/backends/ that
                                        clemcore finds wherever sartco is installed
 - benchmark.BuildBenchmark             the GameBenchmark base; checks the instance file up front
+                                       against the game's episode type (json_fields, sartco.episode)
+- episodes.board_fields / instruct_episode   the episode fields the generators write
 - transcript.MarkdownTranscript        messages as they read (code as code) in transcript.html
 - batching.OpenAIBatchingBackend       `openai_batching`: concurrent requests to an OpenAI-compatible server
 - stub_server.StubServer, benchrun     a local stub model server; `sartco bench-run`

@@ -9,7 +9,7 @@ import this module, not the class, into a master.py:
     class MyGameBenchmark(benchmark.BuildBenchmark):
         master_class = MyGameMaster
         scorer_class = MyScorer
-        episode_fields = {**benchmark.EPISODE_FIELDS, "turns": list}   # what the master reads
+        episode_fields = benchmark.json_fields(MyEpisode)   # a TypedDict of sartco.episode
 
 Instance files are checked up front. `clem run` loads the models, then the game (this class),
 then the instance file, and plays; it hands the game neither the instance rows before playing
@@ -26,15 +26,25 @@ import argparse
 import json
 import os
 import sys
+import typing
 
 from clemcore.clemgame import GameBenchmark
 
+from sartco.episode import PlayedEpisode
+
 from .pictures import attach_all
 
-# the fields every build episode needs (sartco.clem.episodes.board_fields, read by
-# sartco.clem.building and the scorer), with their JSON types
-EPISODE_FIELDS = {"game_id": int, "task": str, "rows": int, "cols": int, "target": dict, "given_code": str,
-                  "gold_code": str}
+
+def json_fields(episode_type) -> dict[str, type]:
+    """field -> JSON type (int, str, dict, list) of every required field of an episode TypedDict
+    of sartco.episode, in the order the type states them."""
+    hints = typing.get_type_hints(episode_type)
+    return {name: typing.get_origin(hint) or hint for name, hint in hints.items()
+            if name in episode_type.__required_keys__}
+
+
+# the fields every build episode needs (read by sartco.clem.building and the scorer)
+EPISODE_FIELDS = json_fields(PlayedEpisode)
 _JSON_TYPE = {int: "a number", str: "a string", dict: "an object", list: "a list"}
 
 
@@ -120,9 +130,10 @@ class BuildBenchmark(GameBenchmark):
                 print(f"clem run -g {game_spec.game_name}: {error}", file=sys.stderr)
                 raise SystemExit(2) from None  # not an Exception: clem's loop does not log and go on
 
-    def fields_of(self, episode: dict) -> dict:
+    @classmethod
+    def fields_of(cls, episode: dict) -> dict:
         """The fields (name -> JSON type) the master reads from this episode."""
-        return self.episode_fields
+        return cls.episode_fields
 
     def create_game_master(self, experiment: dict, player_models):
         return self.master_class(self.game_spec, experiment, player_models)

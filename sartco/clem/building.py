@@ -10,14 +10,13 @@ from __future__ import annotations
 
 from dataclasses import asdict, dataclass, field, fields
 
+from sartco.episode import BUILD_KEY
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, SUCCESS_CATEGORY, ErrorCode, category_family
 from sartco.world.render import differing_cells
 
 from .outcomes import set_attempts_outcome
 from .transcript import code_block, picture, text_block
 
-BUILD_KEY = "sartco_build"          # interactions.json key of the final build record
-ATTEMPTS_KEY = "sartco_attempts"    # every attempt's record, for repair experiments
 BOARD_EVENT = "board"               # the GM->GM event that shows target and built board
 PICTURE = "boards.svg"              # the final build's picture, beside interactions.json
 ATTEMPT_PICTURE = "boards_{}.svg"   # attempt 1, 2, ... (every episode has attempt 1)

@@ -1,8 +1,8 @@
 """The Describer side of cobot_describe: the player who looks at the target board and writes the
 instructions a builder then follows (the paper's model-written instructions).
 
-- Describer                      the player: a clemcore model; `mock` / `rulebased` write the
-                                 episode's template instruction; `human` types in the terminal
+- Describer                      the player: a clemcore model; `mock` / `rulebased` answer from
+                                 sartco.clem.dialogue_answers; `human` types in the terminal
 - parse_instruction / ParseError the text under the "Instruction:" label (none -> aborted)
 - INSTRUCTION_SLOT / fill_builder_prompt   the builder prompt's place for the instruction
 - log_instruction / INSTRUCTION_KEY   the instruction as the game master passed it on, recorded
@@ -14,15 +14,14 @@ instructions a builder then follows (the paper's model-written instructions).
 from __future__ import annotations
 
 import re
-from typing import Callable, Sequence
 
-from clemcore.clemgame import Player
+from sartco.episode import (DESCRIBER_ANSWERED, INSTRUCTION_CHARACTERS, INSTRUCTION_KEY, INSTRUCTION_WORDS,
+                            OBJECT_NAMED)
 
-from .builder import terminal_answer
 from .parsing import ParseError
+from .players import AnswerSource, SourcedPlayer, terminal_answer
 from .scoring import NAN, BuildScorer
 
-INSTRUCTION_KEY = "sartco_instruction"  # interactions.json: {"text", "error", "combo_name"}
 INSTRUCTION_SLOT = "<<DESCRIBER_INSTRUCTION>>"  # where a stored builder prompt takes the instruction
 
 
@@ -84,37 +83,21 @@ def instruction_facts(text: str | None, combo_name: str) -> dict:
     """Instruction Words, Instruction Characters, Object Named (the combination's name, e.g. 'wn',
     as a word of its own, any case); NaN for all when there is no instruction."""
     if text is None:
-        return {"Instruction Words": NAN, "Instruction Characters": NAN, "Object Named": NAN}
+        return {INSTRUCTION_WORDS: NAN, INSTRUCTION_CHARACTERS: NAN, OBJECT_NAMED: NAN}
     named = re.search(rf"(?<![A-Za-z0-9]){re.escape(combo_name)}(?![A-Za-z0-9])", text, re.IGNORECASE)
-    return {"Instruction Words": len(text.split()), "Instruction Characters": len(text),
-            "Object Named": int(bool(named))}
+    return {INSTRUCTION_WORDS: len(text.split()), INSTRUCTION_CHARACTERS: len(text), OBJECT_NAMED: int(bool(named))}
 
 
 def log_instruction(game_master, text: str | None, combo_name: str, error: str | None = None) -> None:
     game_master.log_key(INSTRUCTION_KEY, {"text": text, "error": error, "combo_name": combo_name})
 
 
-class Describer(Player):
-    def __init__(self, model, *, template: str, script: Sequence[str] | None = None,
-                 reply: Callable[[], str] | None = None, name: str | None = None):
-        """template: the episode's template instruction (what `mock` and `rulebased` write first);
-        script: raw answers that `mock` gives first, one per turn (scripted episodes for tests);
-        reply: what `mock` and `rulebased` answer after the instruction (cobot_describe's
-        dialogue: answers to questions, reviews of a build)."""
-        super().__init__(model, name=name, game_role="Describer")
-        self.template = template
-        self.script = list(script) if script else None
-        self.reply = reply
-        self.turn = 0  # answers given so far
+class Describer(SourcedPlayer):
+    """The role that looks at the target and writes instructions (answers: what `mock` and
+    `rulebased` say, sartco.clem.dialogue_answers.describer_answers)."""
 
-    def _custom_response(self, context: dict) -> str:
-        turn = self.turn
-        self.turn += 1
-        if self.script is not None and turn < len(self.script):
-            return self.script[turn]
-        if turn == 0 or self.reply is None:
-            return f"Instruction: {self.template}"
-        return self.reply()
+    def __init__(self, model, answers: AnswerSource, *, name: str | None = None):
+        super().__init__(model, answers, game_role="Describer", name=name)
 
     def _terminal_response(self, context: dict) -> str:
         first = self.turn == 0
@@ -132,6 +115,6 @@ class DescribeScorer(BuildScorer):
         super().compute_episode_scores(interactions)
         record = interactions.get(INSTRUCTION_KEY) or {}
         text = record.get("text")
-        self.log_episode_score("Describer Answered", int(text is not None))
+        self.log_episode_score(DESCRIBER_ANSWERED, int(text is not None))
         for name, value in instruction_facts(text, record.get("combo_name", "")).items():
             self.log_episode_score(name, value)

@@ -17,12 +17,10 @@ program stopped, and the board it left).
 - parse_builder_answer / parse_answer / parse_review   the labels of the new turns
 - clarify_note / question_message / answer_message / review_message / correction_message
                                                 the texts (resources/templates/dialogue/*.j2)
-- programmatic_review / correction_text          the mock describer: "Done" or the pieces to
-                                                remove and to add (sartco.follower.correct)
-- BuilderView / rulebased_turn                   the rule-based builder: code, or a question when
-                                                its parser cannot read the instruction
-- DialogueBuilder                                the Builder that can ask (mock / rulebased)
-- DIALOGUE_KEY / DialogueLog                     what was said, logged for the scorer
+- Dialogue / DialogueLog                         what was said so far (kept by the game master,
+                                                read by the built-in players of
+                                                sartco.clem.dialogue_answers), logged under
+                                                DIALOGUE_KEY for the scorer
 - DialogueScorer                                 DescribeScorer + ES/F1 after the first and the
                                                 last build, ES after round k, first success round,
                                                 questions, corrections, describer words
@@ -32,16 +30,15 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import asdict, dataclass, field
-from typing import Callable
 
-from sartco.follower import FollowError, emit, follow
-from sartco.follower.correct import apply_correction, correction_steps, pieces
+from clemcore.clemgame import metrics
+
+from sartco.episode import (ATTEMPTS_KEY, CELL_F1_AT_1, CELL_F1_AT_N, CORRECTIONS_SENT, DESCRIBER_WORDS, DIALOGUE_KEY,
+                            DIALOGUE_SCORES, ES_AT_1, ES_AT_N, FIRST_SUCCESS_ROUND, QUESTIONS_ASKED, round_score)
 from sartco.instances.templates import render
-from sartco.episode import DIALOGUE_SCORES, round_score
 from sartco.world.render import grid_explanation, grid_text
 
-from .builder import RULEBASED, Builder, fenced, rulebased_code
-from .building import ATTEMPTS_KEY, BuildRecord
+from .building import BuildRecord
 from .describer import DescribeScorer, label, text_under
 from .feedback import BOARD_FORM
 from .parsing import ParseError, parse_code
@@ -49,7 +46,6 @@ from .parsing import ParseError, parse_code
 MODES = ("oneshot", "clarify", "correct", "clarify_correct")
 MODE_FIELD, QUESTIONS_FIELD, CORRECTIONS_FIELD = "mode", "questions", "corrections"
 DEFAULT_QUESTIONS, DEFAULT_CORRECTIONS = 2, 3
-DIALOGUE_KEY = "sartco_dialogue"   # interactions.json: DialogueLog.to_json()
 DONE = "Done"
 
 _QUESTION = label(r"questions?")
@@ -147,89 +143,6 @@ def correction_message(correction: str, questions_left: int) -> str:
     return render("dialogue/correction.j2", correction=correction, questions_left=questions_left).strip()
 
 
-# --- the mock describer -----------------------------------------------------------------------------
-def correction_text(built: dict, target: dict) -> str:
-    """The pieces to remove and to add, in the template wording; "" when the boards are equal."""
-    removals, additions = correction_steps(built, target)
-    return render("instructions/simple/correction.j2", removals=removals, additions=additions).strip()
-
-
-def programmatic_review(built: dict, target: dict) -> str:
-    text = correction_text(built, target)
-    return f"Correction: {text}" if text else DONE
-
-
-# --- the rule-based builder -------------------------------------------------------------------------
-@dataclass
-class BuilderView:
-    """What the builder knows: the describer's words and what its own last program built (it
-    knows its code); never the target."""
-    task: str
-    given_code: str
-    rows: int
-    cols: int
-    instruction: str = ""
-    answers: list[str] = field(default_factory=list)   # answers to its questions since its last build
-    correction: str | None = None      # the correction of its last build, when one came
-    built: dict | None = None          # the cells its last program built
-    questions_left: int = 0
-
-
-def _question(problem: str) -> str:
-    return (f"Question: I cannot read this: {problem}. Which component of which color goes where "
-            f"(row and column of each)?")
-
-
-def rulebased_turn(view: BuilderView) -> tuple[str, str]:
-    """("code", code) or ("question", question). It follows the newest answer it can read; else,
-    after a correction, the puts of its last board with the correction applied; else the
-    instruction. When it can read none of them and may still ask, it asks."""
-    problem = None
-    for text in reversed(view.answers):
-        try:
-            return "code", _follow(text, view)
-        except FollowError as error:
-            problem = problem or str(error)
-    if view.correction is not None and view.built is not None:
-        try:
-            steps = apply_correction([p for _, p in pieces(view.built)], view.correction, view.rows, view.cols)
-        except FollowError as error:
-            if view.questions_left:
-                return "question", _question(str(error))
-            steps = [p for _, p in pieces(view.built)]  # it cannot read the correction: the same board again
-        if not steps:
-            return "code", "# the correction leaves nothing to build"
-        return "code", emit.optimal_function(steps, None) if view.task == "optimal_function" else emit.first_order(steps)
-    try:
-        return "code", _follow(view.instruction, view)
-    except FollowError as error:
-        problem = problem or str(error)
-    if view.questions_left:
-        return "question", _question(problem)
-    return "code", rulebased_code(view.instruction, view.task, view.given_code, view.rows, view.cols)
-
-
-def _follow(text: str, view: BuilderView) -> str:
-    return follow(text, view.task, view.given_code, view.rows, view.cols)
-
-
-class DialogueBuilder(Builder):
-    """The Builder of cobot_describe: as programmatic player (`mock` after its script,
-    `rulebased`) it answers by rulebased_turn(view()): code (fenced) or a question."""
-
-    def __init__(self, model, *, view: Callable[[], BuilderView], script=None):
-        super().__init__(model, script=script)
-        self.view = view
-
-    def _custom_response(self, context: dict) -> str:
-        follows = self.model.name == RULEBASED or self.script is None or self.turn >= len(self.script)
-        if not follows:
-            return super()._custom_response(context)
-        self.turn += 1
-        kind, text = rulebased_turn(self.view())
-        return text if kind == "question" else fenced(text)
-
-
 # --- the record and the scores ----------------------------------------------------------------------
 @dataclass
 class DialogueLog:
@@ -253,6 +166,23 @@ class DialogueLog:
         return asdict(self)
 
 
+@dataclass
+class Dialogue:
+    """What has been said in an episode so far: the game master writes it as the dialogue goes
+    on; the built-in players read what they heard from it (sartco.clem.dialogue_answers)."""
+    log: DialogueLog
+    expect: str = "instruction"        # the describer's next answer: instruction | answer | review
+    instruction: str | None = None
+    answers: list[str] = field(default_factory=list)   # the describer's answers since the last build
+    correction: str | None = None      # the correction the builder has not answered yet
+    builds: list[BuildRecord] = field(default_factory=list)
+
+    def left(self, kind: str) -> int:
+        """Questions ("question") or corrections left."""
+        limit = self.log.questions if kind == "question" else self.log.corrections
+        return limit - self.log.count(kind)
+
+
 class DialogueScorer(DescribeScorer):
     """DescribeScorer (Main Score = 100 x final ES, ...) plus, from every build (ATTEMPTS_KEY)
     and the dialogue log (DIALOGUE_KEY): ES@1 and Cell F1@1 (the first build), ES@N and Cell
@@ -267,15 +197,15 @@ class DialogueScorer(DescribeScorer):
         log = DialogueLog(**interactions[DIALOGUE_KEY]) if interactions.get(DIALOGUE_KEY) else \
             DialogueLog(settings.mode, settings.questions, settings.corrections)
         builds = [BuildRecord.from_json(b) for b in interactions.get(ATTEMPTS_KEY) or []]
-        played = bool(builds) and not interactions.get("Aborted", 0)
+        played = bool(builds) and not interactions.get(metrics.METRIC_ABORTED, 0)
         nan = math.nan
         es = [b.es for b in builds]
         values = {
-            "ES@1": es[0] if played else nan, "ES@N": es[-1] if played else nan,
-            "Cell F1@1": builds[0].f1 if played else nan, "Cell F1@N": builds[-1].f1 if played else nan,
-            "First Success Round": es.index(1) if 1 in es else nan,
-            "Questions Asked": log.count("question"), "Corrections Sent": log.count("correction"),
-            "Describer Words": log.describer_words,
+            ES_AT_1: es[0] if played else nan, ES_AT_N: es[-1] if played else nan,
+            CELL_F1_AT_1: builds[0].f1 if played else nan, CELL_F1_AT_N: builds[-1].f1 if played else nan,
+            FIRST_SUCCESS_ROUND: es.index(1) if 1 in es else nan,
+            QUESTIONS_ASKED: log.count("question"), CORRECTIONS_SENT: log.count("correction"),
+            DESCRIBER_WORDS: log.describer_words,
         }
         for k in range(settings.corrections + 1):
             values[round_score(k)] = es[min(k, len(es) - 1)] if played else nan

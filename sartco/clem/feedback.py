@@ -18,20 +18,19 @@ import re
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, ErrorCode
 from sartco.world.render import grid_text
 
-ATTEMPTS_FIELD = "attempts"          # experiment field: attempts per episode, the first included (default 1)
-LEGACY_FIELD = "repair_attempts"     # older experiment field: attempts after the first
+ATTEMPTS_FIELD = "attempts"  # experiment field: attempts per episode, the first included (default 1)
 
 
 def max_attempts(experiment: dict) -> int:
-    """How many attempts an episode of this experiment allows (1 = the paper's protocol)."""
-    if experiment.get(ATTEMPTS_FIELD) is not None:
-        value, name, least = experiment[ATTEMPTS_FIELD], ATTEMPTS_FIELD, 1
-    else:
-        value, name, least = experiment.get(LEGACY_FIELD) or 0, LEGACY_FIELD, 0
-    if isinstance(value, bool) or not isinstance(value, int) or value < least:
-        raise ValueError(f"experiment {experiment.get('name')!r}: field {name!r} must be an integer >= {least}, "
+    """How many attempts an episode of this experiment allows (1 = the paper's protocol). The
+    game master reads it once and logs it (MAX_ATTEMPTS_KEY); the scorer and the report read that."""
+    value = experiment.get(ATTEMPTS_FIELD)
+    if value is None:
+        return 1
+    if isinstance(value, bool) or not isinstance(value, int) or value < 1:
+        raise ValueError(f"experiment {experiment.get('name')!r}: field {ATTEMPTS_FIELD!r} must be an integer >= 1, "
                          f"not {value!r}")
-    return value if name == ATTEMPTS_FIELD else 1 + value
+    return value
 
 
 BOARD_FORM = ("one list per row from the top; an empty cell is ⬜️, a filled cell lists its components "

@@ -16,21 +16,19 @@ Score = 100 x Paper ES.
 """
 from __future__ import annotations
 
+from sartco.episode import PAPER_KEY, PAPER_SCORES, PaperExperiment, PaperProtocolEpisode
 from sartco.paper import PROTOCOL
-from sartco.episode import PAPER_SCORES
 from sartco.paper.table3 import generation, load_table3
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
 
-from .benchmark import EPISODE_FIELDS
+from .benchmark import json_fields
 from .building import build_answers, log_build
 from .outcomes import set_share_outcome
 from .scoring import BuildScorer
 
-PAPER_KEY = "sartco_paper"     # interactions.json: {"em", "cb", "es", "turns": [...]}
 PAPER_EVENT = "paper_turn"     # one GM->GM event per turn: what the authors' scorer read and scored
 # what cobot_instruct's master and scorer read from a paper episode (checked before clem run plays)
-PAPER_EPISODE_FIELDS = {**EPISODE_FIELDS, "protocol": str, "variant": str, "messages": list, "mock_answers": list,
-                        "gold": list, "given_function": str}
+PAPER_EPISODE_FIELDS = json_fields(PaperProtocolEpisode)
 
 
 def is_paper(fields: dict) -> bool:
@@ -47,17 +45,17 @@ def gold_code(episode: dict) -> str:
     return "\n".join(turn["output"] for turn in episode["gold"])
 
 
-def experiment_fields(episode: dict) -> dict:
+def experiment_fields(episode: dict) -> PaperExperiment:
     """What an experiment of one Table 3 cell records (the generator adds its name): the protocol,
     the cell, where its examples came from, and the generation settings the paper used."""
     cell = episode["cell"]
-    return {"protocol": PROTOCOL, "board_type": cell["board"], "object_type": cell["object"], "task": cell["task"],
-            "source": cell["source"], "instructions": cell["instructions"], "variant": episode["variant"],
-            "file": episode["file"], "split": "test", "ablation": None, "examples_from": episode["examples_from"],
-            "generation": generation(load_table3())}
+    return PaperExperiment(protocol=PROTOCOL, board_type=cell["board"], object_type=cell["object"], task=cell["task"],
+                           source=cell["source"], instructions=cell["instructions"], variant=episode["variant"],
+                           file=episode["file"], split="test", ablation=None, examples_from=episode["examples_from"],
+                           generation=generation(load_table3()))
 
 
-def instance_fields(episode: dict) -> dict:
+def instance_fields(episode: dict) -> PaperProtocolEpisode:
     """A game instance of a paper episode (PaperEpisode.to_json()): the episode as it is, plus the
     board fields our own build and scores read (sartco.clem.building.build_for, BuildScorer)."""
     cell = episode["cell"]

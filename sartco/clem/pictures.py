@@ -15,10 +15,11 @@ import json
 import logging
 from pathlib import Path
 
+from sartco.episode import ATTEMPTS_KEY, BUILD_KEY
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
 from sartco.world.render import diff_svg
 
-from .building import ATTEMPT_PICTURE, ATTEMPTS_KEY, BUILD_KEY, PICTURE
+from .building import ATTEMPT_PICTURE, PICTURE
 
 log = logging.getLogger(__name__)
 

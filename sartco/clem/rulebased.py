@@ -3,14 +3,15 @@ cobot_instruct -m rulebased`. Registered wherever sartco is installed by the pac
 {"model_name": "rulebased", "backend": "rulebased"} and backend file in sartco/clem/backends
 (sartco.clem.packaged), beside the user's own model_registry.json.
 
-The model is a CustomResponseModel, so clemcore's Player calls the game's
-`Builder._custom_response`, which asks sartco.follower instead of returning the gold code.
+The model is a CustomResponseModel, so clemcore's Player answers from the player's answer source,
+chosen by this model name when the player is made (sartco.clem.answers.instruct_answers: the
+follower instead of the gold code; sartco.clem.dialogue_answers in cobot_describe).
 """
 from __future__ import annotations
 
 from clemcore.backends import Backend, CustomResponseModel, Model, ModelSpec
 
-from .builder import RULEBASED
+from .players import RULEBASED
 
 
 class RulebasedModel(CustomResponseModel):

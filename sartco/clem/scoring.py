@@ -25,20 +25,18 @@ from __future__ import annotations
 
 from clemcore.clemgame import GameScorer, metrics
 
+from sartco.episode import (ATTEMPT_CATEGORIES, ATTEMPTS, ATTEMPTS_KEY, BUILD_KEY, BUILD_SCORES, CATEGORY_SEPARATOR,
+                            CELL_F1, CELL_PRECISION, CELL_RECALL, CODEBLEU, ERROR_CATEGORY, ERROR_FAMILY, ES_AT_1,
+                            ES_AT_N, EXACT_MATCH, EXECUTION_SUCCESS, MAX_ATTEMPTS, MAX_ATTEMPTS_KEY, PUTS)
 from sartco.world import ErrorCode, category_family
 
-from .building import ATTEMPTS_KEY, BUILD_KEY, BuildRecord
-from .feedback import max_attempts
+from .building import BuildRecord
 
 NAN = float("nan")
-SCORES = ("Execution Success", "Exact Match", "CodeBLEU", "Cell Precision", "Cell Recall", "Cell F1")
-CATEGORY_SEPARATOR = ","  # in Attempt Categories
 
 
 class BuildScorer(GameScorer):
-    """`gold_key` names the instance field holding the gold code of the builder's style."""
-
-    gold_key = "gold_code"
+    """The scores of an episode's recorded build, against the episode's gold code."""
 
     def compute_round_score(self, round_idx, round_events) -> None:
         pass  # the build is judged once, at the end of the episode
@@ -51,25 +49,25 @@ class BuildScorer(GameScorer):
         record = BuildRecord.from_json(data) if data else None
         self.log_attempt_scores(interactions, record, aborted)
         if aborted or record is None:
-            for name in SCORES:
+            for name in BUILD_SCORES:
                 self.log_episode_score(name, NAN)
             category = record.category if record else str(ErrorCode.PARSE_ERROR)
-            self.log_episode_score("Error Category", category)
-            self.log_episode_score("Error Family", category_family(category))
-            self.log_episode_score("Puts", 0)
+            self.log_episode_score(ERROR_CATEGORY, category)
+            self.log_episode_score(ERROR_FAMILY, category_family(category))
+            self.log_episode_score(PUTS, 0)
             self.log_episode_score(metrics.BENCH_SCORE, NAN)
             return
-        gold = self.game_instance[self.gold_key]
+        gold = self.game_instance["gold_code"]
         no_code = record.error == ErrorCode.PARSE_ERROR  # a feedback episode's last answer held no code
-        self.log_episode_score("Execution Success", int(record.es))
-        self.log_episode_score("Exact Match", 0 if no_code else int(exact_match(record.builder_code, gold)))
-        self.log_episode_score("CodeBLEU", 0.0 if no_code else float(code_bleu(record.builder_code, gold)))
-        self.log_episode_score("Cell Precision", record.precision)
-        self.log_episode_score("Cell Recall", record.recall)
-        self.log_episode_score("Cell F1", record.f1)
-        self.log_episode_score("Error Category", record.category)
-        self.log_episode_score("Error Family", record.family)
-        self.log_episode_score("Puts", record.puts)
+        self.log_episode_score(EXECUTION_SUCCESS, int(record.es))
+        self.log_episode_score(EXACT_MATCH, 0 if no_code else int(exact_match(record.builder_code, gold)))
+        self.log_episode_score(CODEBLEU, 0.0 if no_code else float(code_bleu(record.builder_code, gold)))
+        self.log_episode_score(CELL_PRECISION, record.precision)
+        self.log_episode_score(CELL_RECALL, record.recall)
+        self.log_episode_score(CELL_F1, record.f1)
+        self.log_episode_score(ERROR_CATEGORY, record.category)
+        self.log_episode_score(ERROR_FAMILY, record.family)
+        self.log_episode_score(PUTS, record.puts)
         self.log_episode_score(metrics.BENCH_SCORE, self.bench_score(interactions, record))
 
     def bench_score(self, interactions: dict, record: BuildRecord) -> float:
@@ -77,15 +75,16 @@ class BuildScorer(GameScorer):
         return 100.0 * record.es
 
     def log_attempt_scores(self, interactions: dict, final: BuildRecord | None, aborted: bool) -> None:
-        """ES@1, ES@N, Attempts, Max Attempts, Attempt Categories - only in feedback experiments."""
-        n = max_attempts(self.experiment)
+        """ES@1, ES@N, Attempts, Max Attempts, Attempt Categories - only in feedback experiments
+        (the master logged MAX_ATTEMPTS_KEY > 1)."""
+        n = interactions.get(MAX_ATTEMPTS_KEY, 1)
         if n <= 1:
             return
         attempts = [BuildRecord.from_json(a) for a in interactions.get(ATTEMPTS_KEY) or []]
         if not attempts and final is not None:
             attempts = [final]
-        self.log_episode_score("ES@1", NAN if aborted or not attempts else int(attempts[0].es))
-        self.log_episode_score("ES@N", NAN if aborted or not attempts else int(attempts[-1].es))
-        self.log_episode_score("Attempts", len(attempts))
-        self.log_episode_score("Max Attempts", n)
-        self.log_episode_score("Attempt Categories", CATEGORY_SEPARATOR.join(a.category for a in attempts))
+        self.log_episode_score(ES_AT_1, NAN if aborted or not attempts else int(attempts[0].es))
+        self.log_episode_score(ES_AT_N, NAN if aborted or not attempts else int(attempts[-1].es))
+        self.log_episode_score(ATTEMPTS, len(attempts))
+        self.log_episode_score(MAX_ATTEMPTS, n)
+        self.log_episode_score(ATTEMPT_CATEGORIES, CATEGORY_SEPARATOR.join(a.category for a in attempts))

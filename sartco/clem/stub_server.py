@@ -19,7 +19,7 @@ import threading
 import time
 from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 
-from .builder import fenced
+from .players import fenced
 
 NO_CODE = "I have no code for this."
 

@@ -17,7 +17,8 @@ from __future__ import annotations
 import html
 import re
 
-MARKDOWN_KEY = "markdown"  # the interactions.json key that switches clemcore's transcript to Markdown
+from sartco.episode import MARKDOWN_KEY  # the interactions.json key that switches clemcore's transcript to Markdown
+
 RAW_KEY = "text"           # a message action's exact text (its `content` is the display form)
 FENCE = re.compile(r"^[ \t]*```[^\n]*\n(.*?)^[ \t]*```[ \t]*$", re.M | re.S)  # a closed fenced block
 TEXT_STYLE = "white-space: pre-wrap; margin: 0"

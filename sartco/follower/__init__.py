@@ -12,18 +12,18 @@ the given object function). The code does not create the board: the caller runs 
 `board = init_board(rows, cols)` (and, for repetition, after the given function).
 
 Failure: FollowError (a ValueError) with a one-line message saying what could not be read;
-no other exception leaves these functions for str input. `try_follow` returns None instead.
+no other exception leaves these functions for str input.
 """
 from __future__ import annotations
 
-from sartco.instances.prompts import TASKS
+from sartco.dataset import TASKS
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
 
 from . import emit
 from .parse import Arrangement, FollowError, Placement, object_name, placements
 from .regular import arrange
 
-__all__ = ["follow", "follow_turn", "try_follow", "read_placements", "FollowError", "Placement",
+__all__ = ["follow", "follow_turn", "read_placements", "FollowError", "Placement",
            "Arrangement", "TASKS"]
 
 
@@ -83,10 +83,3 @@ def follow_turn(instruction: str, history=(), rows: int = DEFAULT_ROWS, cols: in
         raise FollowError(f"no placement found in {instruction.strip()!r:.160}")
     return emit.first_order(steps)
 
-
-def try_follow(instructions, task: str, context: str = "", rows: int = 8, cols: int = 8) -> str | None:
-    """follow(), or None when the instructions cannot be read."""
-    try:
-        return follow(instructions, task, context, rows, cols)
-    except FollowError:
-        return None

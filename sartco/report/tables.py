@@ -25,9 +25,9 @@ import re
 from collections import Counter, defaultdict
 from pathlib import Path
 
-from sartco.clem.feedback import max_attempts
 from sartco.errors import UserError
 from sartco.dataset import SOURCES as SOURCE_ORDER, TASKS as TASK_ORDER
+from sartco.episode import MAX_ATTEMPTS
 from sartco.world import ErrorCode
 
 # clemgame entries whose cells are rows of another game's Table 3 (the published human- and
@@ -68,10 +68,7 @@ def collect(results: Path, games: list[str] | None = None) -> list[dict]:
             continue
         data = load_json(path)
         scores = data.get("episode scores", {})
-        try:
-            attempts = max_attempts(exp)
-        except ValueError as exc:
-            raise UserError(f"{exp_dir / 'experiment.json'}: {exc}") from None
+        attempts = int(scores.get(MAX_ATTEMPTS, 1))  # logged by the scorer of a feedback experiment
         episodes.append({
             "game": game, "model": exp_dir.parent.parent.name, "experiment": exp["name"],
             "board_type": exp["board_type"], "object_type": exp["object_type"], "task": exp["task"],

@@ -4,23 +4,20 @@ trip; scripted describer answers; bad results folders."""
 from __future__ import annotations
 
 import copy
-import importlib.util
 import json
 import math
 import re
 import shutil
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 
+from play_helpers import clem, load_generator
 from sartco.cli import main as sartco_main
 
 REPO = Path(__file__).resolve().parents[2]
 SLICE = REPO / "games" / "cobot_describe" / "in" / "instances_slice.json"
 FULL = REPO / "games" / "cobot_describe" / "in" / "instances.json"
-CLEM = [sys.executable, "-c", "from clemcore.cli import main; main()"]
 
 # name: (describer answer, outcome, error category)
 SCRIPTED = {
@@ -29,20 +26,6 @@ SCRIPTED = {
     "junk": ("Instruction: erere", "lose", "mismatch_location"),  # the follower builds nothing
     "moved object": (None, "lose", "mismatch_location"),  # a valid instruction, one row further up
 }
-
-
-def cobot_instruct_generator():
-    spec = importlib.util.spec_from_file_location(
-        "cobot_instruct_instancegenerator", REPO / "games" / "cobot_instruct" / "instancegenerator.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-def clem(*args, cwd=REPO):
-    done = subprocess.run([*CLEM, *args], cwd=cwd, capture_output=True, text=True, timeout=600)
-    assert done.returncode == 0, done.stderr[-2000:]
-    return done
 
 
 def episodes(results: Path, experiment: str) -> list[dict]:
@@ -153,7 +136,7 @@ def test_round_trip_into_cobot_instruct(describe_run, tmp_path, play_episodes):
     assert manifest["config"]["instruction_sources"] == {"mock": 6} and manifest["defects"] == []
     assert manifest["files"] == {"simple_simple_test.json": 2, "regular_simple_test.json": 2,
                                  "regular_complex_test.json": 2}
-    module = cobot_instruct_generator()  # cobot_instruct's own generator, its --describers path
+    module = load_generator("cobot_instruct")  # cobot_instruct's own generator, its --describers path
     generator = module.CobotInstructInstanceGenerator()
     generator.on_generate(seed=42, dataset_dir=REPO / "instances" / "v1", describers_dir=out)
     experiments = generator.instances["experiments"]

@@ -1,37 +1,27 @@
 """cobot_describe as a dialogue (clarify, correct, both) through clemcore's real loop: `clem run`,
 `clem score`, `clem transcribe` as subprocesses from the repository root, `sartco report` in
-process; scripted describers and builders for every path of the dialogue; the mock describer's
-corrections repair faulty builds on every test board."""
+process; scripted describers and builders for every path of the dialogue (the dialogue's units:
+tests/clem/test_dialogue_turns.py)."""
 from __future__ import annotations
 
 import copy
 import json
-import math
 import re
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 
+from play_helpers import REPO, clem, fence
 from sartco.cli import main as sartco_main
-from sartco.clem.dialogue import correction_text, parse_builder_answer, parse_review, settings_of
-from sartco.clem.parsing import ParseError
+from sartco.clem.dialogue import settings_of
 from sartco.follower import emit
-from sartco.follower.correct import apply_correction, pieces
-from sartco.program import execute_many
+from sartco.follower.correct import pieces
 from sartco.world import COLORS
 
-REPO = Path(__file__).resolve().parents[2]
 SLICE = REPO / "games" / "cobot_describe" / "in" / "instances_slice.json"
 FULL = REPO / "games" / "cobot_describe" / "in" / "instances.json"
-CLEM = [sys.executable, "-c", "from clemcore.cli import main; main()"]
 MODES = ("oneshot", "clarify", "correct", "clarify_correct")
 HOSTILE = "import os\nos.system('touch /tmp/sartco_dialogue_pwned')"
-
-
-def fenced(code: str) -> str:
-    return f"Here is my code:\n```python\n{code}\n```"
 
 
 def wrong_code(target: dict) -> str:
@@ -45,7 +35,7 @@ def no_colours(text: str) -> str:
 
 # name: (mode, describer script (None: mock), builder script (None: rule-based), expected)
 def scenarios(base: dict) -> dict:
-    wrong = fenced(wrong_code(base["target"]))
+    wrong = fence(wrong_code(base["target"]))
     template = base["template_instruction"]
     return {
         "question answered": ("clarify", [f"Instruction: {no_colours(template)}"], None,
@@ -60,7 +50,7 @@ def scenarios(base: dict) -> dict:
                                   dict(outcome="lose", questions=0, corrections=0, builds=1, es=[0, 0, 0, 0])),
         "round limit": ("correct", None, [wrong] * 4,
                         dict(outcome="lose", questions=0, corrections=3, builds=4, es=[0, 0, 0, 0])),
-        "sandbox error in a correction round": ("correct", None, [wrong, fenced(HOSTILE)],
+        "sandbox error in a correction round": ("correct", None, [wrong, fence(HOSTILE)],
                                                 dict(outcome="success", questions=0, corrections=2, builds=3,
                                                      es=[0, 0, 1, 1])),
         "no code in a correction round": ("correct", None, [wrong, "Sorry, I am lost."],
@@ -94,12 +84,6 @@ def scripted_instances() -> dict:
             inst["builder_script"] = builder
         experiment["game_instances"].append(inst)
     return {"experiments": [*data["experiments"], *experiments.values()]}, base
-
-
-def clem(*args):
-    done = subprocess.run([*CLEM, *args], cwd=REPO, capture_output=True, text=True, timeout=900)
-    assert done.returncode == 0, done.stderr[-2000:]
-    return done
 
 
 @pytest.fixture(scope="module")
@@ -273,61 +257,3 @@ def test_report_has_the_dialogue_table_and_plot(run):
         by_experiment = {r["experiment"]: r for r in csv.DictReader(f)}
     assert by_experiment["scripted_correct"]["episodes"] == "5"
     assert float(by_experiment["simple_boards_correct"]["es_at_n"]) == 100.0
-
-
-def test_parsers():
-    clarify = settings_of({"name": "x", "mode": "clarify"})
-    assert (clarify.questions, clarify.corrections) == (2, 0)
-    assert parse_builder_answer("**Question:** which row?", clarify, 0) == ("question", "which row?")
-    with pytest.raises(ParseError, match="past the limit"):
-        parse_builder_answer("Question: which row?", clarify, 2)
-    oneshot = settings_of({"name": "x"})
-    with pytest.raises(ParseError):  # no questions in oneshot: a question is an answer without code
-        parse_builder_answer("Question: which row?", oneshot, 0)
-    assert parse_review("Done.") is None and parse_review("**Done**") is None
-    assert parse_review("Correction: Place a red nut in the 1st row, 1st column.").startswith("Place a red nut")
-    for bad in ("", "Looks good to me", "Correction:"):
-        with pytest.raises(ParseError):
-            parse_review(bad)
-    for bad in ({"mode": "chat"}, {"mode": "correct", "corrections": -1}, {"mode": "clarify", "questions": "2"}):
-        with pytest.raises(ValueError, match="experiment 'x': field"):
-            settings_of({"name": "x", **bad})
-
-
-def test_mock_corrections_repair_faulty_builds_on_every_test_board():
-    """On every oneshot test board: a build missing one piece, one with a piece's colour changed,
-    one shifted a column to the left and an empty one; the mock describer's correction, applied
-    by the rule-based builder, builds the target every time."""
-    full = json.loads(FULL.read_text())["experiments"]
-    targets = [i["target"] for e in full if "mode" not in e for i in e["game_instances"]]
-    assert len(targets) == 390
-    faulty = []
-    for n, target in enumerate(targets):
-        ps = [p for _, p in pieces(target)]
-        k = n % len(ps)
-        recoloured = [type(p)(p.shape, "red" if p.color != "red" else "blue", p.x, p.y) if i == k else p
-                      for i, p in enumerate(ps)]
-        shifted = [type(p)(p.shape, p.color, p.x, max(0, p.y - 1)) for p in ps]
-        for steps in (ps[:k] + ps[k + 1:], recoloured, shifted, []):
-            faulty.append((target, "board = init_board(8, 8)\n" + emit.first_order(steps)))
-    built = execute_many([code for _, code in faulty], 8, 8)
-    repaired = []
-    for (target, _), ex in zip(faulty, built):
-        text = correction_text(ex.cells, target)
-        assert (text == "") == (ex.cells == target)  # a shift off the edge may leave the board as it was
-        steps = apply_correction([p for _, p in pieces(ex.cells)], text) if text else [p for _, p in pieces(target)]
-        repaired.append("board = init_board(8, 8)\n" + emit.first_order(steps))
-    results = execute_many(repaired, 8, 8)
-    failed = [i for i, ((target, _), ex) in enumerate(zip(faulty, results)) if not (ex.ok and ex.cells == target)]
-    assert failed == [] and len(results) == 4 * 390
-    assert correction_text(targets[0], targets[0]) == ""
-
-
-def test_rule_based_builder_reads_corrections():
-    from sartco.follower import FollowError, Placement
-    steps = [Placement("washer", "red", 7, 3), Placement("nut", "blue", 7, 3)]
-    text = "Remove the blue nut in the 8th row, 4th column. Place a green screw in the 8th row, 4th column."
-    assert apply_correction(steps, text) == [steps[0], Placement("screw", "green", 7, 3)]
-    for unreadable in ("That looks wrong.", "Place a nut in the 1st row, 1st column."):  # nothing / no colour
-        with pytest.raises(FollowError):
-            apply_correction(steps, unreadable)

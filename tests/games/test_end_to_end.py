@@ -3,20 +3,13 @@ clem run -> clem score -> clem transcribe -> clem eval -> sartco report. The smo
 cells play as `cobot_instruct`, an ablation as `cobot_instruct_ablations`: clem eval keeps them apart."""
 import csv
 import json
-import subprocess
 import sys
 from pathlib import Path
 
 import pytest
 
-REPO = Path(__file__).resolve().parents[2]
+from play_helpers import REPO, sh
 EXPERIMENT = "rb_so_repetition_template_examples_0"  # 10 val episodes, the smallest kind
-
-
-def sh(*args, cwd=REPO):
-    done = subprocess.run(args, cwd=cwd, capture_output=True, text=True, timeout=600)
-    assert done.returncode == 0, f"{' '.join(args)} failed:\n{done.stdout[-2000:]}\n{done.stderr[-2000:]}"
-    return done
 
 
 @pytest.mark.slow

@@ -1,5 +1,7 @@
 """Scripted answers through the real game loop (clemcore runner, game master, sandboxed
 execution, scorer): each wrong answer ends with the right outcome and error category."""
+from play_helpers import fence, scripted_episode
+
 # target: a red washer with a blue nut on top at row 7, column 3; a yellow bridge-h at (2, 5)-(2, 6)
 TARGET = {"2:5": [["bridge-h", "yellow"]], "2:6": [["bridge-h", "yellow"]],
           "7:3": [["washer", "red"], ["nut", "blue"]]}
@@ -10,22 +12,11 @@ SINGLE = {"name": "scripted_single", "board_type": "simple", "object_type": "sim
 
 
 def instance(game_id, script=None, turns=1):
-    code = "\n".join(GOLD)
-    inst = {"game_id": game_id, "board_id": f"scripted_{game_id}", "rows": 8, "cols": 8, "task": "first_order",
-            "prompt": "Write Python code with put(board, shape, color, x, y).",
-            "turns": ["Place a red washer at row 8, column 4, a blue nut on it, and a yellow horizontal bridge "
-                      "at row 3, columns 6 and 7."] if turns == 1 else
-                     ["Place a red washer at row 8, column 4.", "Place a blue nut on top of it.",
-                      "Place a yellow horizontal bridge at row 3, columns 6 and 7."],
-            "instructions": [], "given_code": "", "target": TARGET,
-            "gold_code": code, "gold_turns": [code] if turns == 1 else GOLD}
-    if script is not None:
-        inst["script"] = script
-    return inst
-
-
-def fence(code):
-    return f"Here is the code:\n```python\n{code}\n```"
+    texts = (["Place a red washer at row 8, column 4, a blue nut on it, and a yellow horizontal bridge "
+              "at row 3, columns 6 and 7."] if turns == 1 else
+             ["Place a red washer at row 8, column 4.", "Place a blue nut on top of it.",
+              "Place a yellow horizontal bridge at row 3, columns 6 and 7."])
+    return scripted_episode(game_id, TARGET, GOLD, texts, script=script, single_turn=turns == 1)
 
 
 WRONG = {
@@ -86,7 +77,7 @@ def test_multi_turn_parse_error_in_the_middle_aborts(play_episodes):
 
 def test_repair_attempt_recovers(play_episodes):
     script = [fence("put(board, 'washer', 'green', 7, 3)\n" + "\n".join(GOLD[1:])), fence("\n".join(GOLD))]
-    [result] = play_episodes([instance(0, script)], dict(SINGLE, name="repair", repair_attempts=1))
+    [result] = play_episodes([instance(0, script)], dict(SINGLE, name="repair", attempts=2))
     s = result["scores"]["episode scores"]
     assert outcome(result["scores"]) == "success" and s["Main Score"] == 100.0
     assert len(result["interactions"]["sartco_attempts"]) == 2

@@ -5,48 +5,23 @@ Categories in scores.json; one picture per attempt; the target never reaches the
 import csv
 import json
 import re
-import subprocess
 import sys
 from pathlib import Path
 
 import pytest
 
+from feedback_cases import GOLD, HOSTILE, NO_CODE, PARTIAL, TARGET, WRONG, WRONG_CATEGORY, assert_no_target
+from play_helpers import fence, scripted_episode, sh
 from sartco.clem.building import build
-from sartco.clem.feedback import feedback_for, feedback_message, max_attempts
-from sartco.world.render import grid_text
 
-REPO = Path(__file__).resolve().parents[2]
-
-# a red washer with a blue nut at (7, 3), a yellow bridge-h at (2, 5)-(2, 6), and a distinctive
-# cell the wrong answers never build: a green screw at (0, 0) (nothing else is green or a screw)
-TARGET = {"0:0": [["screw", "green"]], "2:5": [["bridge-h", "yellow"]],
-          "2:6": [["bridge-h", "yellow"]], "7:3": [["washer", "red"], ["nut", "blue"]]}
-GOLD = ["put(board, 'washer', 'red', 7, 3)", "put(board, 'nut', 'blue', 7, 3)",
-        "put(board, 'bridge-h', 'yellow', 2, 5)", "put(board, 'screw', 'green', 0, 0)"]
-PARTIAL = "\n".join(GOLD[:3])                    # builds everything but the distinctive cell
-WRONG = "\n".join(GOLD[:3]).replace("'red'", "'blue'") + "\nput(board, 'washer', 'red', 0, 1)"  # runs, differs
-WRONG_CATEGORY = build(WRONG, TARGET).category
-NO_CODE = "I would first place the washer, then the nut."
-HOSTILE = "import os\nos.system('touch /tmp/sartco_feedback_pwned')"
 EXPERIMENT = {"name": "scripted_feedback", "board_type": "simple", "object_type": "simple", "task": "first_order",
               "source": "template", "split": "test", "ablation": None, "attempts": 3,
               "feedback_of": "scripted"}
 
 
-def fence(code):
-    return f"Here is the code:\n```python\n{code}\n```"
-
-
 def instance(game_id, script=None, turns=1):
-    code = "\n".join(GOLD)
-    inst = {"game_id": game_id, "board_id": f"scripted_{game_id}", "rows": 8, "cols": 8, "task": "first_order",
-            "prompt": "Write Python code with put(board, shape, color, x, y).",
-            "turns": ["Build the board."] if turns == 1 else [f"Instruction {k + 1}." for k in range(len(GOLD))],
-            "instructions": [], "given_code": "", "target": TARGET, "gold_code": code,
-            "gold_turns": [code] if turns == 1 else list(GOLD)}
-    if script is not None:
-        inst["script"] = script
-    return inst
+    texts = ["Build the board."] if turns == 1 else [f"Instruction {k + 1}." for k in range(len(GOLD))]
+    return scripted_episode(game_id, TARGET, GOLD, texts, script=script, single_turn=turns == 1)
 
 
 def scores(result):
@@ -62,52 +37,6 @@ def feedback_texts(result):
 
 def board_events(result):
     return [e for t in result["interactions"]["turns"] for e in t if e["action"]["type"] == "board"]
-
-
-# --- the feedback message on its own ------------------------------------------------------
-
-def assert_no_target(text):
-    assert "green" not in text and "screw" not in text and "0:0" not in text
-    for leak in ("P/R/F1", "precision", "recall", "F1", "cells differ", "mismatch", "target board:"):
-        assert leak.lower() not in text.lower(), leak
-    assert not re.search(r"\d+ cells?", text)
-
-
-def test_feedback_reports_execution_facts_only():
-    partial = build(PARTIAL, TARGET)
-    assert partial.category.startswith("mismatch")
-    text = feedback_for(partial, attempts_left=2)
-    assert "differs from the target" in text and grid_text(partial.cells) in text and "2 attempts left" in text
-    assert_no_target(text)
-    failed = build("put(board, 'washer', 'red', 7, 3)\nput(board, 'bridge-h', 'red', 2, 7)", TARGET)
-    text = feedback_for(failed, attempts_left=1)
-    assert failed.message.startswith("line 3: ")  # of the executed program: init_board is line 1
-    assert f"{failed.error}: line 2: {failed.message[len('line 3: '):]}" in text and grid_text(failed.cells) in text
-    assert "1 attempt left" in text
-    assert_no_target(text)
-
-
-def test_feedback_does_not_depend_on_the_target():
-    other = {"4:4": [["washer", "blue"]]}
-    for code in (PARTIAL, WRONG, "put(board, 'nut', 'red', 9, 9)", HOSTILE):
-        assert feedback_for(build(code, TARGET)) == feedback_for(build(code, other))
-
-
-def test_feedback_counts_lines_in_the_builders_code():
-    text = feedback_for(build("put(board, 'washer', 'red', 7, 3)\n" + HOSTILE, TARGET))
-    assert "forbidden: line 2:" in text  # line 3 of the executed program (after init_board)
-    given = "def f(board):\n    put(board, 'nut', 'red', 9, 9)"
-    text = feedback_for(build("f(board)", TARGET, given_code=given))
-    assert "line 2 of the given code" in text
-
-
-def test_feedback_for_no_code_and_the_attempts_field():
-    text = feedback_message(error="parse_error", message="no code found in the answer", cells={})
-    assert "No code was found" in text and "⬜️" not in text
-    assert max_attempts({}) == 1 and max_attempts({"attempts": 3}) == 3 and max_attempts({"repair_attempts": 1}) == 2
-    for bad in ({"attempts": 0}, {"attempts": "3"}, {"attempts": True}, {"repair_attempts": -1}):
-        with pytest.raises(ValueError, match="must be an integer"):
-            max_attempts(dict(bad, name="bad"))
 
 
 # --- through the game loop ----------------------------------------------------------------
@@ -226,12 +155,6 @@ def test_report_repair_table(play_episodes, tmp_path):
 
 
 # --- clem run / score / transcribe / eval and sartco report -----------------------------------
-
-def sh(*args):
-    done = subprocess.run(args, cwd=REPO, capture_output=True, text=True, timeout=600)
-    assert done.returncode == 0, f"{' '.join(args)} failed:\n{done.stdout[-2000:]}\n{done.stderr[-2000:]}"
-    return done
-
 
 @pytest.mark.slow
 def test_feedback_experiment_end_to_end(tmp_path):

@@ -1,29 +1,21 @@
 """SARTCo as a training environment: the train split instance file and clemcore's gym env over
 it (sartco.clem.training), driven by a scripted policy: observations, rewards, info, episode ends."""
-import importlib.util
 import json
 from pathlib import Path
 
 import pytest
 
+from play_helpers import REPO, load_generator
 from sartco.clem.training import gym_env
 
-REPO = Path(__file__).resolve().parents[2]
 GAME_DIR = REPO / "games" / "cobot_instruct"
-
-
-def generator():
-    spec = importlib.util.spec_from_file_location("cobot_instruct_instancegenerator", GAME_DIR / "instancegenerator.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
 
 
 @pytest.fixture(scope="module")
 def train_file(tmp_path_factory):
     """A small train instance file (2 episodes per cell), written outside the repository."""
     folder = tmp_path_factory.mktemp("train")
-    module = generator()
+    module = load_generator("cobot_instruct")
     gen = module.CobotInstructInstanceGenerator()
     path = gen.generate(str(folder / "instances_train.json"), seed=42, dataset_dir=REPO / "instances" / "v1",
                         part="train", train_episodes=2)
@@ -47,7 +39,7 @@ def test_train_split_is_its_own_file_of_train_boards(train_file):
             assert inst["board_id"] in train_ids and inst["board_id"] not in test_ids
             assert inst["board_id"] not in inst["examples"]  # never its own board as an example
     # the same seed gives the same file
-    again = generator().CobotInstructInstanceGenerator().generate(
+    again = load_generator("cobot_instruct").CobotInstructInstanceGenerator().generate(
         str(train_file.parent / "again.json"), seed=42, dataset_dir=REPO / "instances" / "v1", part="train", train_episodes=2)
     assert Path(again).read_bytes() == train_file.read_bytes()
 

@@ -1,0 +1,76 @@
+"""cobot_describe's dialogue on its own (sartco.clem.dialogue, sartco.clem.dialogue_answers): the
+labels of the new turns, the mock describer's corrections on every test board, the rule-based
+builder reading corrections."""
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from play_helpers import REPO
+from sartco.clem.dialogue import parse_builder_answer, parse_review, settings_of
+from sartco.clem.dialogue_answers import correction_text
+from sartco.clem.parsing import ParseError
+from sartco.follower import emit
+from sartco.follower.correct import apply_correction, pieces
+from sartco.program import execute_many
+
+FULL = REPO / "games" / "cobot_describe" / "in" / "instances.json"
+
+
+def test_parsers():
+    clarify = settings_of({"name": "x", "mode": "clarify"})
+    assert (clarify.questions, clarify.corrections) == (2, 0)
+    assert parse_builder_answer("**Question:** which row?", clarify, 0) == ("question", "which row?")
+    with pytest.raises(ParseError, match="past the limit"):
+        parse_builder_answer("Question: which row?", clarify, 2)
+    oneshot = settings_of({"name": "x"})
+    with pytest.raises(ParseError):  # no questions in oneshot: a question is an answer without code
+        parse_builder_answer("Question: which row?", oneshot, 0)
+    assert parse_review("Done.") is None and parse_review("**Done**") is None
+    assert parse_review("Correction: Place a red nut in the 1st row, 1st column.").startswith("Place a red nut")
+    for bad in ("", "Looks good to me", "Correction:"):
+        with pytest.raises(ParseError):
+            parse_review(bad)
+    for bad in ({"mode": "chat"}, {"mode": "correct", "corrections": -1}, {"mode": "clarify", "questions": "2"}):
+        with pytest.raises(ValueError, match="experiment 'x': field"):
+            settings_of({"name": "x", **bad})
+
+
+def test_mock_corrections_repair_faulty_builds_on_every_test_board():
+    """On every oneshot test board: a build missing one piece, one with a piece's colour changed,
+    one shifted a column to the left and an empty one; the mock describer's correction, applied
+    by the rule-based builder, builds the target every time."""
+    full = json.loads(FULL.read_text())["experiments"]
+    targets = [i["target"] for e in full if "mode" not in e for i in e["game_instances"]]
+    assert len(targets) == 390
+    faulty = []
+    for n, target in enumerate(targets):
+        ps = [p for _, p in pieces(target)]
+        k = n % len(ps)
+        recoloured = [type(p)(p.shape, "red" if p.color != "red" else "blue", p.x, p.y) if i == k else p
+                      for i, p in enumerate(ps)]
+        shifted = [type(p)(p.shape, p.color, p.x, max(0, p.y - 1)) for p in ps]
+        for steps in (ps[:k] + ps[k + 1:], recoloured, shifted, []):
+            faulty.append((target, "board = init_board(8, 8)\n" + emit.first_order(steps)))
+    built = execute_many([code for _, code in faulty], 8, 8)
+    repaired = []
+    for (target, _), ex in zip(faulty, built):
+        text = correction_text(ex.cells, target)
+        assert (text == "") == (ex.cells == target)  # a shift off the edge may leave the board as it was
+        steps = apply_correction([p for _, p in pieces(ex.cells)], text) if text else [p for _, p in pieces(target)]
+        repaired.append("board = init_board(8, 8)\n" + emit.first_order(steps))
+    results = execute_many(repaired, 8, 8)
+    failed = [i for i, ((target, _), ex) in enumerate(zip(faulty, results)) if not (ex.ok and ex.cells == target)]
+    assert failed == [] and len(results) == 4 * 390
+    assert correction_text(targets[0], targets[0]) == ""
+
+
+def test_rule_based_builder_reads_corrections():
+    from sartco.follower import FollowError, Placement
+    steps = [Placement("washer", "red", 7, 3), Placement("nut", "blue", 7, 3)]
+    text = "Remove the blue nut in the 8th row, 4th column. Place a green screw in the 8th row, 4th column."
+    assert apply_correction(steps, text) == [steps[0], Placement("screw", "green", 7, 3)]
+    for unreadable in ("That looks wrong.", "Place a nut in the 1st row, 1st column."):  # nothing / no colour
+        with pytest.raises(FollowError):
+            apply_correction(steps, unreadable)

@@ -1,0 +1,93 @@
+"""Helpers of the tests that play the games: one copy each (tests/games, tests/clem).
+
+- play(instances, experiment, results_dir, ...)   cobot_instruct episodes through clemcore's real
+                                                  loop in-process (the `play_episodes` fixture)
+- scripted_episode(...)                           a cobot_instruct episode as the generator writes
+                                                  one (sartco.episode.InstructEpisode), with
+                                                  the `script` mock answers instead of gold code
+- fence(code)                                     an answer with its code in a fenced block
+- load_generator(game)                            a game's instancegenerator.py as a module
+- sh(*args) / clem(*args)                          a command (clemcore's CLI) that must succeed
+"""
+from __future__ import annotations
+
+import importlib.util
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+from sartco.episode import InstructEpisode
+
+REPO = Path(__file__).resolve().parents[1]
+GAMES = REPO / "games"
+
+
+def fence(code: str) -> str:
+    return f"Here is the code:\n```python\n{code}\n```"
+
+
+def scripted_episode(game_id: int, target: dict, gold: list[str], turns: list[str], *,
+                     script: list[str] | None = None, single_turn: bool = True) -> InstructEpisode:
+    """A first_order episode of a simple board: `turns` the builder's messages; `gold` the puts,
+    answered by `mock` all at once (single_turn) or one per turn; `script`: the raw answers
+    `mock` gives instead (the last one repeated)."""
+    code = "\n".join(gold)
+    episode = InstructEpisode(
+        game_id=game_id, task="first_order", rows=8, cols=8, target=target, given_code="", gold_code=code,
+        board_id=f"scripted_{game_id}", board_type="simple", object_type="simple", combo_name="scripted",
+        source="template", turns=turns, instructions=[], gold_turns=[code] if single_turn else list(gold), examples=[])
+    if script is not None:
+        episode["script"] = script
+    return episode
+
+
+def play(instances: list[dict], experiment: dict, results_dir: Path, model: str = "mock",
+         game: str = "cobot_instruct", gen_args: dict | None = None) -> list[dict]:
+    """Run the instances as one experiment of a game entry of games/cobot_instruct/clemgame.json;
+    return, per instance, {"interactions", "scores", "dir"}."""
+    from clemcore import backends
+    from clemcore.clemgame import (ExperimentFileSaver, GameBenchmark, GameBenchmarkCallbackList, GameInstances,
+                                   GameSpec, InstanceFileSaver, InteractionsFileSaver, ResultsFolder)
+    from clemcore.clemgame.runners import sequential
+
+    spec = next(s for s in GameSpec.from_directory(str(GAMES / "cobot_instruct")) if s.game_name == game)
+    models = backends.load_models([model], gen_args or dict(temperature=0.0, max_tokens=300))
+    folder = ResultsFolder(Path(results_dir), run_dir=backends.Model.to_identifier(models))
+    infos = backends.Model.to_infos(models)
+    callbacks = GameBenchmarkCallbackList([
+        InstanceFileSaver(folder), ExperimentFileSaver(folder, player_model_infos=infos),
+        InteractionsFileSaver(folder, player_model_infos=infos),
+    ])
+    rows = [{"game_name": spec.game_name, "experiment": experiment, "game_instance": inst} for inst in instances]
+    with GameBenchmark.load_from_spec(spec) as bench:
+        sequential.run(bench, GameInstances(spec.game_name, rows), models, callbacks=callbacks)
+        files = sorted(Path(results_dir).rglob("interactions.json"))
+        bench.compute_scores(files)
+    out = []
+    for inst in instances:
+        d = Path(results_dir) / folder.run_dir / spec.game_name / experiment["name"] / f"instance_{inst['game_id']:05d}"
+        out.append({"interactions": json.loads((d / "interactions.json").read_text()),
+                    "scores": json.loads((d / "scores.json").read_text().replace("NaN", "null")),
+                    "dir": d})
+    return out
+
+
+def load_generator(game: str):
+    """games/<game>/instancegenerator.py as a module (the games are folders, not packages)."""
+    spec = importlib.util.spec_from_file_location(f"{game}_instancegenerator", GAMES / game / "instancegenerator.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def sh(*args, cwd=REPO, timeout=900) -> subprocess.CompletedProcess:
+    """Run a command; fail the test with the end of its output when it fails."""
+    done = subprocess.run(args, cwd=cwd, capture_output=True, text=True, timeout=timeout)
+    assert done.returncode == 0, f"{' '.join(map(str, args))} failed:\n{done.stdout[-2000:]}\n{done.stderr[-2000:]}"
+    return done
+
+
+def clem(*args, cwd=REPO) -> subprocess.CompletedProcess:
+    """clemcore's CLI (`clem ...`) with this interpreter."""
+    return sh(sys.executable, "-c", "from clemcore.cli import main; main()", *args, cwd=cwd)
