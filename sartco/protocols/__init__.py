@@ -17,8 +17,8 @@ Protocols:
   examples (default instances/v1).
 - `sartco` (ours): the episodes of games/cobot_instruct/in/instances.json (and
   instances_published.json when present). file = experiment name, sample = board id, variant =
-  task; messages = what the Builder receives per turn (the instance's `prompt`, if any, in front
-  of the first turn, joined by a blank line as clemcore does). Scored as the game scores: each
+  task; messages = what the Builder receives per turn (the episode's `turns`: the first holds the
+  whole prompt). Scored as the game scores: each
   answer's code found by sartco.clem.parsing.parse_code (an answer without code aborts the
   episode: category parse_error, "aborted": true, all scores 0), the turns' code joined and run by
   sartco.clem.building.build; em/cb of the whole program against the gold code (sartco.scores),
@@ -86,9 +86,7 @@ def our_episodes(data: Path | None) -> list[dict]:
 
 
 def our_episode(experiment: str, instance: dict) -> dict:
-    turns = list(instance["turns"])
-    prompt = instance.get("prompt")
-    messages = [f"{prompt}\n\n{turns[0]}" if prompt else turns[0]] + turns[1:]  # clemcore's get_context_for
+    messages = list(instance["turns"])  # what the Builder receives per turn (the first holds the whole prompt)
     sample, variant = instance["board_id"], instance["task"]
     return {"id": f"{experiment}/{sample}/{variant}", "protocol": OUR_PROTOCOL, "file": experiment,
             "sample": sample, "variant": variant, "messages": messages, "instance": instance}

@@ -92,8 +92,7 @@ def test_export_prompts_sartco_sends_what_the_game_sends(capsys, monkeypatch):
     for item, instance in zip(out, experiment["game_instances"]):
         assert item["id"] == f"sb_so_first_order_template/{instance['board_id']}/first_order"
         assert (item["file"], item["sample"], item["variant"]) == ("sb_so_first_order_template", instance["board_id"], "first_order")
-        prompt = instance.get("prompt")
-        assert item["messages"] == ([prompt + "\n\n" + instance["turns"][0]] if prompt else instance["turns"][:1]) + instance["turns"][1:]
+        assert item["messages"] == instance["turns"]
     code, _, err = run(capsys, monkeypatch, ["export-prompts", "--protocol", "sartco", "--variant", "nope"])
     assert code == 2 and "unknown task(s) nope" in err
 
