@@ -31,6 +31,7 @@ from sartco.episode import (ATTEMPT_CATEGORIES, ATTEMPTS, ATTEMPTS_KEY, BUILD_KE
 from sartco.world import ErrorCode, category_family
 
 from .building import BuildRecord
+from .feedback import max_attempts
 
 NAN = float("nan")
 
@@ -77,7 +78,9 @@ class BuildScorer(GameScorer):
     def log_attempt_scores(self, interactions: dict, final: BuildRecord | None, aborted: bool) -> None:
         """ES@1, ES@N, Attempts, Max Attempts, Attempt Categories - only in feedback experiments
         (the master logged MAX_ATTEMPTS_KEY > 1)."""
-        n = interactions.get(MAX_ATTEMPTS_KEY, 1)
+        n = interactions.get(MAX_ATTEMPTS_KEY)
+        if n is None:  # results recorded before masters logged it: the same parse, of the experiment
+            n = max_attempts(self.experiment)
         if n <= 1:
             return
         attempts = [BuildRecord.from_json(a) for a in interactions.get(ATTEMPTS_KEY) or []]

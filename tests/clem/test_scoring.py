@@ -1,0 +1,39 @@
+"""BuildScorer's attempt scores: the master's logged attempt count decides, and results recorded
+before masters logged it are scored from the experiment with the same parse."""
+from __future__ import annotations
+
+import math
+
+from clemcore.clemgame.metrics import KEY_EPISODE_SCORES
+
+from sartco.clem.building import build
+from sartco.clem.scoring import BuildScorer
+from sartco.episode import ATTEMPT_CATEGORIES, ATTEMPTS, ATTEMPTS_KEY, ES_AT_1, ES_AT_N, MAX_ATTEMPTS, MAX_ATTEMPTS_KEY
+
+TARGET = {"0:0": [["washer", "red"]]}
+
+
+def scores(experiment: dict, interactions: dict) -> dict:
+    scorer = BuildScorer("cobot_instruct", experiment, {"game_id": 0, "gold_code": ""})
+    wrong = build("put(board, 'washer', 'blue', 0, 0)", TARGET)
+    right = build("put(board, 'washer', 'red', 0, 0)", TARGET)
+    interactions = {ATTEMPTS_KEY: [wrong.to_json(), right.to_json()], **interactions}
+    scorer.log_attempt_scores(interactions, right, aborted=False)
+    return scorer.scores[KEY_EPISODE_SCORES]
+
+
+def test_logged_attempt_count_decides():
+    got = scores({"name": "x", "attempts": 2}, {MAX_ATTEMPTS_KEY: 3})
+    assert (got[ES_AT_1], got[ES_AT_N], got[ATTEMPTS], got[MAX_ATTEMPTS]) == (0, 1, 2, 3)
+    assert got[ATTEMPT_CATEGORIES] == "mismatch_color,success"
+
+
+def test_results_without_the_logged_count_are_scored_from_the_experiment():
+    got = scores({"name": "x", "attempts": 3}, {})
+    assert (got[ES_AT_1], got[ES_AT_N], got[MAX_ATTEMPTS]) == (0, 1, 3)
+
+
+def test_single_attempt_experiments_have_no_attempt_scores():
+    assert scores({"name": "x"}, {}) == {}
+    assert scores({"name": "x", "attempts": 3}, {MAX_ATTEMPTS_KEY: 1}) == {}
+    assert not math.isnan(scores({"name": "x", "attempts": 2}, {})[ES_AT_1])
