@@ -8,7 +8,7 @@ from ..world.board import MAX_SIDE
 from . import parse as p
 from .parse import Arrangement, FollowError
 
-Cells = frozenset[tuple[int, int]]
+Footprint = frozenset[tuple[int, int]]  # the cells an object occupies, as (row, col) offsets from its anchor
 
 
 def function_name(context: str) -> str | None:
@@ -17,7 +17,7 @@ def function_name(context: str) -> str | None:
 
 
 def footprint(context: str, name: str | None, n_colors: int, rows: int = DEFAULT_ROWS,
-              cols: int = DEFAULT_COLS) -> Cells | None:
+              cols: int = DEFAULT_COLS) -> Footprint | None:
     """The cells the given object function covers, relative to its anchor.
 
     The follower reads the object function the way a model would try it out: it runs the function
@@ -40,7 +40,7 @@ def footprint(context: str, name: str | None, n_colors: int, rows: int = DEFAULT
     return frozenset((x - pad, y - pad) for x, y in map(parse_key, ex.cells))
 
 
-def _span(cells: Cells) -> tuple[int, int]:
+def _span(cells: Footprint) -> tuple[int, int]:
     xs = [x for x, _ in cells]
     ys = [y for _, y in cells]
     return max(xs) - min(xs) + 1, max(ys) - min(ys) + 1
