@@ -2,7 +2,7 @@
 import json
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[1]
 DATA = ROOT.parent / "shared" / "sartco-data"
 PUBLISHED = DATA / "published"
 PROTOCOL_DIR = DATA / "paper-protocol"
