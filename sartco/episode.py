@@ -6,9 +6,8 @@ The instance generators write these records, the masters and scorers read them, 
 the scores by these names, and the tests build episodes with them; a field or a score is named
 here and nowhere else.
 """
-from __future__ import annotations
 
-from typing import TypedDict
+from typing import NotRequired, TypedDict
 
 # ---------------------------------------------------------------------------- scores.json names
 # every build episode (sartco.clem.scoring.BuildScorer); Main Score is clemcore's BENCH_SCORE
@@ -77,6 +76,9 @@ class PlayedEpisode(TypedDict):
     target: dict           # sartco.world.Board.to_json
     given_code: str        # the code the program starts with (repetition: the object function)
     gold_code: str         # the gold answer in the task's style (exact match, CodeBLEU)
+    # optional, written by no generator: answers `mock` gives verbatim, one per turn, instead of the
+    # gold (scripted episodes of the tests and of hand-made instance files; sartco.clem.answers)
+    script: NotRequired[list[str]]
 
 
 class BuildEpisode(PlayedEpisode):
