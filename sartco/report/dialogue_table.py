@@ -18,7 +18,8 @@ import math
 from collections import defaultdict
 from pathlib import Path
 
-from sartco.episode import DIALOGUE_SCORES, ROUND_PREFIX, round_score
+from sartco.episode import (CELL_F1_AT_1, CELL_F1_AT_N, CORRECTIONS_SENT, DESCRIBER_WORDS, DIALOGUE_SCORES, ES_AT_1,
+                            ES_AT_N, FIRST_SUCCESS_ROUND, QUESTIONS_ASKED, ROUND_PREFIX, round_score)
 
 from .files import load_json, markdown_table, number, write_csv
 
@@ -76,14 +77,14 @@ def rows_of(episodes: list[dict]) -> list[dict]:
             "questions": first["questions"] if "clarify" in first["mode"] else 0,
             "corrections": first["corrections"] if "correct" in first["mode"] else 0,
             "episodes": len(group), "played": _mean([1.0 - e["aborted"] for e in group], pct=True),
-            "es_at_1": _mean([e["ES@1"] for e in group], pct=True, zero=True),
-            "es_at_n": _mean([e["ES@N"] for e in group], pct=True, zero=True),
-            "f1_at_1": _mean([e["Cell F1@1"] for e in group], pct=True, zero=True),
-            "f1_at_n": _mean([e["Cell F1@N"] for e in group], pct=True, zero=True),
-            "first_success_round": _mean([e["First Success Round"] for e in group]),
-            "questions_asked": _mean([e["Questions Asked"] for e in played]),
-            "corrections_sent": _mean([e["Corrections Sent"] for e in played]),
-            "describer_words": _mean([e["Describer Words"] for e in played]),
+            "es_at_1": _mean([e[ES_AT_1] for e in group], pct=True, zero=True),
+            "es_at_n": _mean([e[ES_AT_N] for e in group], pct=True, zero=True),
+            "f1_at_1": _mean([e[CELL_F1_AT_1] for e in group], pct=True, zero=True),
+            "f1_at_n": _mean([e[CELL_F1_AT_N] for e in group], pct=True, zero=True),
+            "first_success_round": _mean([e[FIRST_SUCCESS_ROUND] for e in group]),
+            "questions_asked": _mean([e[QUESTIONS_ASKED] for e in played]),
+            "corrections_sent": _mean([e[CORRECTIONS_SENT] for e in played]),
+            "describer_words": _mean([e[DESCRIBER_WORDS] for e in played]),
         })
     return rows
 

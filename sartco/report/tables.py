@@ -27,15 +27,17 @@ from pathlib import Path
 
 from sartco.errors import UserError
 from sartco.dataset import SOURCES as SOURCE_ORDER, TASKS as TASK_ORDER
-from sartco.episode import MAX_ATTEMPTS
+from sartco.episode import (ATTEMPTS, CELL_F1, CODEBLEU, ERROR_CATEGORY, ES_AT_1, EXACT_MATCH, EXECUTION_SUCCESS,
+                            MAX_ATTEMPTS)
 from sartco.world import ErrorCode
+
+from . import dialogue_table, paper_table
+from .files import load_json, markdown_table, number, write_csv
 
 # clemgame entries whose cells are rows of another game's Table 3 (the published human- and
 # model-written instructions beside the template ones, as in the paper); every other game name
 # (cobot_instruct_ablations, _feedback, ...) is reported under its own name
 TABLE3_GAME = {"cobot_instruct_published": "cobot_instruct"}
-from . import dialogue_table, paper_table
-from .files import load_json, markdown_table, number, write_csv
 
 TASK_NAMES = {"first_order": "first-order (multi-turn)", "sequence_function": "function from puts",
               "optimal_function": "optimal function", "repetition": "repetition"}
@@ -74,12 +76,12 @@ def collect(results: Path, games: list[str] | None = None) -> list[dict]:
             "board_type": exp["board_type"], "object_type": exp["object_type"], "task": exp["task"],
             "source": exp.get("source", ""), "split": exp.get("split", ""), "ablation": exp.get("ablation"),
             "aborted": int(scores.get("Aborted", 0) or 0),
-            "em": number(scores.get("Exact Match")), "cb": number(scores.get("CodeBLEU")),
-            "es": number(scores.get("Execution Success")), "f1": number(scores.get("Cell F1")),
-            "category": scores.get("Error Category") or (str(ErrorCode.PARSE_ERROR) if scores.get("Aborted") else "unknown"),
+            "em": number(scores.get(EXACT_MATCH)), "cb": number(scores.get(CODEBLEU)),
+            "es": number(scores.get(EXECUTION_SUCCESS)), "f1": number(scores.get(CELL_F1)),
+            "category": scores.get(ERROR_CATEGORY) or (str(ErrorCode.PARSE_ERROR) if scores.get("Aborted") else "unknown"),
             "max_attempts": attempts, "feedback_of": exp.get("feedback_of", ""), "mode": exp.get("mode") or "oneshot",
-            "es1": number(scores.get("ES@1", scores.get("Execution Success"))),
-            "attempts_used": number(scores.get("Attempts")),
+            "es1": number(scores.get(ES_AT_1, scores.get(EXECUTION_SUCCESS))),
+            "attempts_used": number(scores.get(ATTEMPTS)),
             "experiment_fields": exp, "scores": scores, "player_models": data.get("player_models"),
         })
     if not episodes:
