@@ -35,12 +35,11 @@ from pathlib import Path
 from string import Template
 from typing import Iterable
 
-from sartco.dataset import REGULAR_SIMPLE, PublishedName
+from sartco.dataset import PublishedName
 from sartco.errors import UserError
 from sartco.published.files import PUBLISHED, gold_boards, read_samples
-from sartco.published.samples import template_stem
 
-from .examples import Pools, editor_code
+from .examples import Pools, dialogue_turns, sample_key
 from .vocabulary import INSTRUCTION_LABEL, LABELS, PROTOCOL, VARIANTS, published_test_files, template_name, variants_of
 
 DEFAULT_PUBLISHED = PUBLISHED
@@ -159,12 +158,9 @@ def build_episodes(published_dir: Path = DEFAULT_PUBLISHED, generated_dir: Path 
 def _episode(pools: Pools, data_dir: Path, file: PublishedName, sid: str, sample: dict, variant: str,
              target: dict | None) -> PaperEpisode:
     v = VARIANTS[variant]
-    turns = sample["dialogues"][variant]["instructions"]
-    texts = [t["<Programmer>"] for t in turns]
-    codes = [editor_code(t["<Editor>"], v.family) for t in turns]
-    _, _, count, combo, _ = sid.split("/")
-    seed = template_stem(sample["seed_template"]) if file.kind.board == REGULAR_SIMPLE.board else None
-    examples, origin = pools.examples(file, v.training, count, combo, seed)
+    turns = dialogue_turns(sample["dialogues"][variant], v.family)
+    texts, codes = [t["text"] for t in turns], [t["code"] for t in turns]
+    examples, origin = pools.examples(file, v.training, *sample_key(sid, sample))
     template = _template(data_dir / "paper-protocol" / template_name(variant))
     messages = [first_message(template, sample, variant, examples, texts[0])] + [instruction(t) for t in texts[1:]]
     return PaperEpisode(

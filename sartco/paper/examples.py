@@ -20,19 +20,31 @@ from sartco.instances.storage import load_dataset
 from sartco.published.files import read_samples
 from sartco.published.samples import template_stem
 
-from .vocabulary import VARIANTS, training_stem
+from .vocabulary import GOLD_KEYS, VARIANTS, training_stem
 
 N_EXAMPLES = 5
 EXAMPLE_SEED = "42"
 
 
 def editor_code(editor: Any, family: str) -> dict:
-    """The code of one dialogue turn's <Editor> as the family's answer keys."""
+    """The code of one dialogue turn's <Editor> (a multi-turn editor: the put line itself; else a
+    code dict, ours or the authors') as the family's gold keys."""
     if family == "multi_turn":
         return {"output": editor}
-    if family == "single_turn":
-        return {"function": editor["function"], "usage": editor["usage"]}
-    return {"output": editor["output"]}
+    return {key: editor[key] for key in GOLD_KEYS[family]}
+
+
+def dialogue_turns(dialogue: dict, family: str) -> list[dict]:
+    """A published dialogue's turns as {"text": <Programmer>, "code": editor_code(<Editor>)}."""
+    return [{"text": t["<Programmer>"], "code": editor_code(t["<Editor>"], family)} for t in dialogue["instructions"]]
+
+
+def sample_key(sid: str, sample: dict) -> tuple[str, str, str | None]:
+    """(number of components, combination, regular boards: seed_template stem) of a published sample:
+    what the example rule compares."""
+    board_type, _, count, combo, _ = sid.split("/")
+    seed = template_stem(sample["seed_template"]) if board_type == REGULAR_SIMPLE.board else None
+    return count, combo, seed
 
 
 @dataclass(frozen=True, slots=True)
@@ -47,15 +59,12 @@ def published_pool(samples: list[tuple[str, dict]], family_of_training: dict[str
     """A published training file's samples (sartco.published.files.read_samples) as candidates, in file order."""
     items = []
     for sid, sample in samples:
-        board_type, _, count, combo, _ = sid.split("/")
         turns = {}
         for training, family in family_of_training.items():
             dialogue = sample.get("dialogues", {}).get(training)
             if dialogue:
-                turns[training] = [{"text": t["<Programmer>"], "code": editor_code(t["<Editor>"], family)}
-                                   for t in dialogue["instructions"]]
-        seed = template_stem(sample["seed_template"]) if board_type == REGULAR_SIMPLE.board else None
-        items.append(TrainItem(count, combo, seed, turns))
+                turns[training] = dialogue_turns(dialogue, family)
+        items.append(TrainItem(*sample_key(sid, sample), turns))
     return items
 
 
@@ -72,15 +81,11 @@ def generated_pool(records: list[dict], family_of_training: dict[str, str]) -> l
                 turns = {}
                 for training, family in family_of_training.items():
                     task = VARIANTS[training].task
-                    code = r["code"][task]
+                    code, text = r["code"][task], instruction_text(r, task, "template")
                     if family == "multi_turn":
-                        texts = instruction_text(r, task, "template")
-                        turns[training] = [{"text": t, "code": {"output": s}} for t, s in zip(texts, code["steps"])]
-                    elif family == "single_turn":
-                        turns[training] = [{"text": instruction_text(r, task, "template"),
-                                            "code": {"function": code["function"], "usage": code["usage"]}}]
+                        turns[training] = [{"text": t, "code": editor_code(s, family)} for t, s in zip(text, code["steps"])]
                     else:
-                        turns[training] = [{"text": instruction_text(r, task, "template"), "code": {"output": code["output"]}}]
+                        turns[training] = [{"text": text, "code": editor_code(code, family)}]
                 seed = r["arrangement"] if r["board_type"] == REGULAR_SIMPLE.board else None
                 items.append(TrainItem(str(count), combo, seed, turns))
     return items
@@ -108,6 +113,12 @@ class Pools:
         self.published_dir, self.generated_dir = published_dir, generated_dir
         self.pools: dict[str, tuple[list[TrainItem], str]] = {}
         self.selected: dict[tuple, list[dict]] = {}
+        self.generated: tuple[dict, dict] | None = None  # the generated dataset, read once for every kind
+
+    def generated_dataset(self) -> tuple[dict, dict]:
+        if self.generated is None:
+            self.generated = load_dataset(self.generated_dir)
+        return self.generated
 
     def pool(self, file: PublishedName) -> tuple[list[TrainItem], str]:
         kind = file.kind
@@ -118,7 +129,7 @@ class Pools:
                 where, origin, records = path.name, f"published {path.stem}", read_samples(path)
                 convert = published_pool
             else:
-                manifest, files = load_dataset(self.generated_dir)
+                manifest, files = self.generated_dataset()
                 name = kind.dataset_file("train")
                 if name not in files:
                     raise UserError(f"{self.generated_dir}: no {name} (the train split that stands in for "

@@ -79,8 +79,7 @@ def prediction_lines(text: str) -> list[str]:
     when the answer's label shares the line ("Function: def f(...):") -- the README's reason for
     the paper's EM of 0 on every function cell. A line the cut leaves empty ("Here is the code:",
     "# step 1:") stays in the list as "" (the empty lines are dropped before the cut)."""
-    lines = [line.strip() for line in text.split("\n") if line.strip()]
-    return [line.split(":")[1].strip() if ":" in line else line for line in lines]
+    return [line.split(":")[1].strip() if ":" in line else line for line in gold_lines(text)]
 
 
 def exact_match(prediction: str, gold: str) -> bool:

@@ -27,7 +27,7 @@ from sartco.instances.gold_code import run_gold_code
 from sartco.instances.storage import FORMAT, dumps, in_file_order, make_folder
 
 from .defects import Defect, instruction_defects, judge_gold, overlap_defects
-from .files import base_file, discover, gold_boards, read_json, walk
+from .files import base_file, discover, gold_boards, read_samples
 from .samples import SampleError, base_record, fingerprint, variant_texts
 
 
@@ -43,7 +43,7 @@ class Importer:
 
     def run(self) -> None:
         for path, name in discover(self.src):
-            samples = list(walk(read_json(path), path.name))
+            samples = read_samples(path)
             self.read_counts[path.name] = len(samples)
             if name.source == "template":
                 self.read_base(path.name, name, samples)
