@@ -17,16 +17,15 @@ from __future__ import annotations
 from clemcore.clemgame import metrics
 from clemcore.clemgame.master import Outcome
 
-from sartco.world import SUCCESS_CATEGORY, ErrorCode
+from sartco.world import ErrorCode, category_family
 
 
 def outcome_for(category: str | ErrorCode | None) -> Outcome:
     """The clemcore outcome of an episode whose final build has this category (None = success)."""
-    if category in (None, "", SUCCESS_CATEGORY):
+    family = category_family(category)
+    if family == "success":
         return Outcome.SUCCESS
-    if ErrorCode(category) is ErrorCode.PARSE_ERROR:
-        return Outcome.ABORTED
-    return Outcome.FAILURE
+    return Outcome.ABORTED if family == "parse" else Outcome.FAILURE
 
 
 def outcome_of_attempts(categories) -> Outcome:

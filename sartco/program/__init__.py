@@ -55,8 +55,7 @@ Modules (each one's docstring has the details):
   execution.py    Limits, Execution; clean() for every message written
   compare.py      Comparison: ES, mismatch category, cell precision/recall/F1; judge()
   lines.py        one line of the `sartco execute` contract (parsed and answered inside the workers)
-  serve.py        `sartco execute` (JSON lines); bench.py `sartco bench-execute`
-  gold.py         the published gold programs with the authors' boards (tests, benchmark)
+  serve.py        `sartco execute` (JSON lines; `sartco bench-execute`, sartco.bench_execute, measures it)
 
 `execute_many(programs, rows, cols, limits, workers=None)` runs a batch (split over up to two
 worker processes); `shutdown()` kills the workers (they restart on the next call).

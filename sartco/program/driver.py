@@ -33,6 +33,7 @@ from pathlib import Path
 from sartco.world import ErrorCode
 
 from .execution import Execution, Limits
+from .worker import OUT_OF_MEMORY, RETIRED
 
 E = ErrorCode
 CHUNK = 64  # items per worker round trip
@@ -47,7 +48,6 @@ _BOOT = (
     "import sys; sys.path.insert(0, sys.argv[1]); "
     "from sartco.program.worker import main; sys.exit(main(int(sys.argv[2])))"
 )
-RETIRED = b"!"  # the first byte of the last answer of a worker that retires (see worker.py)
 
 
 class _Dead(Exception):
@@ -182,8 +182,6 @@ class Worker:
 
 def _died(status: int | None) -> Execution:
     """The verdict of a program whose worker ended without answering it."""
-    from .worker import OUT_OF_MEMORY
-
     if status == OUT_OF_MEMORY:
         return failed(E.RESOURCE_LIMIT, "the sandbox worker ran out of memory")
     if status in (-signal.SIGKILL, -signal.SIGXCPU):  # the kernel's OOM killer or a CPU limit

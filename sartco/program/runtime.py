@@ -64,9 +64,8 @@ def _attr(obj, name):
 
 def _caught(exc):
     """The first statement of every except handler: budget stops and refusals go on."""
-    global SPOILED
     if isinstance(exc, MemoryError):
-        SPOILED = True
+        _spoil()
     if isinstance(exc, (Limit, Forbidden, MemoryError, RecursionError)) or length_hint(_STEPS) == 0:
         raise exc
 

@@ -20,7 +20,8 @@ from sartco.world.board import MAX_SIDE
 
 from .lines import finish, parse_line
 from .pool import dispatch
-from .execution import Execution, Limits
+from .driver import failed
+from .execution import Limits
 
 CHUNK = 1 << 16
 IN_FLIGHT = 2  # batches being run at once (the next one queues on each worker's lock)
@@ -106,7 +107,7 @@ def _answers(lines, rows, cols, limits, workers, cache) -> bytes:
     try:
         answers = dispatch("line", items, keys, rows, cols, limits, workers, cache)
     except Exception as exc:  # noqa: BLE001 - every line gets an answer, whatever happens
-        answers = [Execution(False, ErrorCode.RUNTIME_ERROR, f"sandbox failure: {exc}", {}, 0)] * len(items)
+        answers = [failed(ErrorCode.RUNTIME_ERROR, f"sandbox failure: {exc}")] * len(items)
     text = []
     for (number, raw), ans in zip(lines, answers):
         if type(ans) is bytes:

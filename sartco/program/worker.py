@@ -38,6 +38,7 @@ import time
 
 
 OUT_OF_MEMORY = 3  # exit status: the parent reports resource_limit for the current item
+RETIRED = b"!"  # the first byte of the last answer of a worker that retires (the parent then replaces it)
 RETIRE_BYTES = 64 * 1024 * 1024  # resident memory growth after which a worker retires
 PR_SET_PDEATHSIG = 1
 AHEAD_SHARE = 0.1  # of Limits.wall_time: the longest a worker compiles a batch ahead
@@ -148,7 +149,7 @@ def main(parent: int = 0) -> int:
                     job = prepare(item)
                 text = answer(job).encode("ascii")
                 if runtime.SPOILED or resident() > retire_at:
-                    out.write(b"!" + text + b"\n")
+                    out.write(RETIRED + text + b"\n")
                     out.flush()
                     os._exit(0)
                 out.write(text + b"\n")

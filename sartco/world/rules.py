@@ -53,10 +53,11 @@ def check(board: Board, shape, color, x, y) -> int | None:
         if height >= 2:
             _fail(E.BRIDGE_PLACEMENT, f"{shape} at ({x}, {y}) would sit at level {height + 1}; bridges go on level 1 or 2")
         second = x2 * cols + y2
-        if len(stacks[second]) >= MAX_DEPTH:
-            _fail(E.VALUE_ERROR, f"{shape} at ({x}, {y}) needs cell ({x2}, {y2}), which is full ({MAX_DEPTH} pieces)")
-        if len(stacks[second]) != height:
-            _fail(E.DEPTH_MISMATCH, f"{shape} at ({x}, {y}) spans cells of heights {height} and {len(stacks[second])}")
+        height2 = len(stacks[second])
+        if height2 != height:  # (height < 2 here: a full second cell is always another height)
+            if height2 >= MAX_DEPTH:
+                _fail(E.VALUE_ERROR, f"{shape} at ({x}, {y}) needs cell ({x2}, {y2}), which is full ({MAX_DEPTH} pieces)")
+            _fail(E.DEPTH_MISMATCH, f"{shape} at ({x}, {y}) spans cells of heights {height} and {height2}")
     if height:
         top = anchor[-1][0]
         if top in NOTHING_ON_TOP:
