@@ -147,8 +147,12 @@ class InstructExperiment(Experiment, _Feedback):
     dataset: dict          # the dataset's version, source, seed, path, generator seed, examples
 
 
+# cobot_describe's modes (experiment field `mode`; sartco.clem.dialogue plays them), in report order
+DIALOGUE_MODES = ("oneshot", "clarify", "correct", "clarify_correct")
+
+
 class _Dialogue(TypedDict, total=False):
-    mode: str              # sartco.clem.dialogue.MODES; absent: oneshot
+    mode: str              # DIALOGUE_MODES; absent: oneshot
     questions: int
     corrections: int
 

@@ -34,7 +34,8 @@ from dataclasses import asdict, dataclass, field
 from clemcore.clemgame import metrics
 
 from sartco.episode import (ATTEMPTS_KEY, CELL_F1_AT_1, CELL_F1_AT_N, CORRECTIONS_SENT, DESCRIBER_WORDS, DIALOGUE_KEY,
-                            DIALOGUE_SCORES, ES_AT_1, ES_AT_N, FIRST_SUCCESS_ROUND, QUESTIONS_ASKED, round_score)
+                            DIALOGUE_MODES, DIALOGUE_SCORES, ES_AT_1, ES_AT_N, FIRST_SUCCESS_ROUND, QUESTIONS_ASKED,
+                            round_score)
 from sartco.instances.templates import render
 from sartco.world.render import grid_explanation, grid_text
 
@@ -43,7 +44,7 @@ from .describer import DescribeScorer, label, text_under
 from .feedback import BOARD_FORM
 from .parsing import ParseError, parse_code
 
-MODES = ("oneshot", "clarify", "correct", "clarify_correct")
+MODES = DIALOGUE_MODES
 MODE_FIELD, QUESTIONS_FIELD, CORRECTIONS_FIELD = "mode", "questions", "corrections"
 DEFAULT_QUESTIONS, DEFAULT_CORRECTIONS = 2, 3
 DONE = "Done"

@@ -7,8 +7,8 @@ Score names (scores.json, written by sartco.clem.dialogue.DialogueScorer):
   First Success Round  0 = the first build, k = after the k-th correction (NaN: never)
   Questions Asked, Corrections Sent, Describer Words   (instruction, answers and corrections)
 
-write(results, out, games) writes dialogue.md, dialogue.csv and dialogue_rounds.svg (nothing when
-the results hold no dialogue scores) and returns the names written. Percentages are over all
+write(episodes, out) writes dialogue.md, dialogue.csv and dialogue_rounds.svg from the episodes of
+sartco.report.tables.collect (nothing when none has dialogue scores) and returns the names written. Percentages are over all
 episodes of a row, an aborted episode counting 0, as in the other tables; the means of the
 counts are over the played episodes, the first success round over the episodes that succeeded.
 """
@@ -18,49 +18,30 @@ import math
 from collections import defaultdict
 from pathlib import Path
 
-from sartco.episode import (CELL_F1_AT_1, CELL_F1_AT_N, CORRECTIONS_SENT, DESCRIBER_WORDS, DIALOGUE_SCORES, ES_AT_1,
-                            ES_AT_N, FIRST_SUCCESS_ROUND, QUESTIONS_ASKED, ROUND_PREFIX, round_score)
+from sartco.episode import (CELL_F1_AT_1, CELL_F1_AT_N, CORRECTIONS_SENT, DESCRIBER_WORDS, DIALOGUE_MODES, DIALOGUE_SCORES,
+                            ES_AT_1, ES_AT_N, FIRST_SUCCESS_ROUND, QUESTIONS_ASKED, ROUND_PREFIX, round_score)
 
-from .files import load_json, markdown_table, number, write_csv
+from .files import markdown_table, mean, number, percent, write_csv
 
 HEADER = ["model", "game", "experiment", "mode", "questions", "corrections", "episodes", "played", "es_at_1",
           "es_at_n", "f1_at_1", "f1_at_n", "first_success_round", "questions_asked", "corrections_sent",
           "describer_words"]
-MODE_ORDER = ("oneshot", "clarify", "correct", "clarify_correct")
 COLOURS = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf")
 
 
-def _mean(values, *, pct: bool = False, zero: bool = False) -> float:
-    """Mean (x 100 when pct); missing values count 0 when zero, else are left out."""
-    values = [0.0 if v is None else v for v in values] if zero else [v for v in values if v is not None]
-    if not values:
-        return float("nan")
-    return round((100.0 if pct else 1.0) * sum(values) / len(values), 2)
-
-
-def collect(results: Path, games: list[str] | None = None) -> list[dict]:
-    """One row per scored episode that has dialogue scores."""
-    experiments: dict[Path, dict] = {}
-    episodes = []
-    for path in sorted(results.rglob("scores.json")):
-        scores = load_json(path).get("episode scores", {})
+def dialogue_episodes(episodes: list[dict]) -> list[dict]:
+    """The episodes of sartco.report.tables.collect that have dialogue scores, with their dialogue fields."""
+    out = []
+    for e in episodes:
+        scores, exp = e["scores"], e["experiment_fields"]
         if round_score(0) not in scores:
             continue
-        exp_dir = path.parent.parent
-        if exp_dir not in experiments:
-            exp_file = exp_dir / "experiment.json"
-            experiments[exp_dir] = load_json(exp_file) if exp_file.is_file() else {}
-        exp = experiments[exp_dir]
-        game = exp.get("game_name") or exp_dir.parent.name
-        if games and game not in games:
-            continue
         rounds = sorted(int(k[len(ROUND_PREFIX):]) for k in scores if k.startswith(ROUND_PREFIX))
-        episodes.append({"model": exp_dir.parent.parent.name, "game": game, "experiment": exp.get("name", exp_dir.name),
-                         "mode": exp.get("mode") or "oneshot", "questions": exp.get("questions", 0) or 0,
-                         "corrections": exp.get("corrections", 0) or 0, "aborted": int(scores.get("Aborted", 0) or 0),
-                         "rounds": [number(scores[round_score(k)]) for k in rounds],
-                         **{name: number(scores.get(name)) for name in DIALOGUE_SCORES}})
-    return episodes
+        out.append({"model": e["model"], "game": e["game"], "experiment": e["experiment"], "mode": e["mode"],
+                    "questions": exp.get("questions", 0) or 0, "corrections": exp.get("corrections", 0) or 0,
+                    "aborted": e["aborted"], "rounds": [number(scores[round_score(k)]) for k in rounds],
+                    **{name: number(scores.get(name)) for name in DIALOGUE_SCORES}})
+    return out
 
 
 def rows_of(episodes: list[dict]) -> list[dict]:
@@ -69,22 +50,22 @@ def rows_of(episodes: list[dict]) -> list[dict]:
         groups[(e["model"], e["game"], e["experiment"])].append(e)
     rows = []
     for (model, game, experiment), group in sorted(groups.items(), key=lambda kv: (
-            kv[0][0], kv[0][1], MODE_ORDER.index(kv[1][0]["mode"]) if kv[1][0]["mode"] in MODE_ORDER else 99, kv[0][2])):
+            kv[0][0], kv[0][1], DIALOGUE_MODES.index(kv[1][0]["mode"]) if kv[1][0]["mode"] in DIALOGUE_MODES else 99, kv[0][2])):
         first = group[0]
         played = [e for e in group if not e["aborted"]]
         rows.append({
             "model": model, "game": game, "experiment": experiment, "mode": first["mode"],
             "questions": first["questions"] if "clarify" in first["mode"] else 0,
             "corrections": first["corrections"] if "correct" in first["mode"] else 0,
-            "episodes": len(group), "played": _mean([1.0 - e["aborted"] for e in group], pct=True),
-            "es_at_1": _mean([e[ES_AT_1] for e in group], pct=True, zero=True),
-            "es_at_n": _mean([e[ES_AT_N] for e in group], pct=True, zero=True),
-            "f1_at_1": _mean([e[CELL_F1_AT_1] for e in group], pct=True, zero=True),
-            "f1_at_n": _mean([e[CELL_F1_AT_N] for e in group], pct=True, zero=True),
-            "first_success_round": _mean([e[FIRST_SUCCESS_ROUND] for e in group]),
-            "questions_asked": _mean([e[QUESTIONS_ASKED] for e in played]),
-            "corrections_sent": _mean([e[CORRECTIONS_SENT] for e in played]),
-            "describer_words": _mean([e[DESCRIBER_WORDS] for e in played]),
+            "episodes": len(group), "played": mean([1.0 - e["aborted"] for e in group], pct=True),
+            "es_at_1": percent([e[ES_AT_1] for e in group]),
+            "es_at_n": percent([e[ES_AT_N] for e in group]),
+            "f1_at_1": percent([e[CELL_F1_AT_1] for e in group]),
+            "f1_at_n": percent([e[CELL_F1_AT_N] for e in group]),
+            "first_success_round": mean([e[FIRST_SUCCESS_ROUND] for e in group]),
+            "questions_asked": mean([e[QUESTIONS_ASKED] for e in played]),
+            "corrections_sent": mean([e[CORRECTIONS_SENT] for e in played]),
+            "describer_words": mean([e[DESCRIBER_WORDS] for e in played]),
         })
     return rows
 
@@ -95,10 +76,10 @@ def curves(episodes: list[dict]) -> dict[tuple[str, str], list[float]]:
     for e in episodes:
         groups[(e["model"], e["mode"])].append(e)
     out = {}
-    for key in sorted(groups, key=lambda k: (k[0], MODE_ORDER.index(k[1]) if k[1] in MODE_ORDER else 99, k[1])):
+    for key in sorted(groups, key=lambda k: (k[0], DIALOGUE_MODES.index(k[1]) if k[1] in DIALOGUE_MODES else 99, k[1])):
         group = groups[key]
         n = max(len(e["rounds"]) for e in group)
-        out[key] = [_mean([e["rounds"][min(k, len(e["rounds"]) - 1)] for e in group], pct=True, zero=True)
+        out[key] = [percent([e["rounds"][min(k, len(e["rounds"]) - 1)] for e in group])
                     for k in range(n)]
     return out
 
@@ -141,8 +122,9 @@ def _escape(text: str) -> str:
     return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
 
 
-def write(results: Path, out: Path, games: list[str] | None = None) -> list[str]:
-    episodes = collect(results, games)
+def write(episodes: list[dict], out: Path) -> list[str]:
+    """dialogue.md / .csv / dialogue_rounds.svg from the rows of sartco.report.tables.collect."""
+    episodes = dialogue_episodes(episodes)
     if not episodes:
         return []
     rows = rows_of(episodes)

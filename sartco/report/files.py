@@ -18,6 +18,20 @@ def number(value) -> float | None:
     return None if math.isnan(value) else value
 
 
+def mean(values, *, pct: bool = False, zero: bool = False) -> float:
+    """Mean (x 100 when pct), rounded to 2 places; missing values (None) count 0 when zero, else
+    are left out; NaN when nothing is left."""
+    values = [0.0 if v is None else v for v in values] if zero else [v for v in values if v is not None]
+    if not values:
+        return float("nan")
+    return round((100.0 if pct else 1.0) * sum(values) / len(values), 2)
+
+
+def percent(values) -> float:
+    """Mean in percent over all values; a missing value (an aborted episode) counts 0."""
+    return mean(values, pct=True, zero=True)
+
+
 def load_json(path: Path) -> dict:
     try:
         return json.loads(path.read_text(encoding="utf-8"))

@@ -32,7 +32,7 @@ from sartco.episode import (ATTEMPTS, CELL_F1, CODEBLEU, ERROR_CATEGORY, ES_AT_1
 from sartco.world import ErrorCode
 
 from . import dialogue_table, paper_table
-from .files import load_json, markdown_table, number, write_csv
+from .files import load_json, markdown_table, number, percent, write_csv
 
 # clemgame entries whose cells are rows of another game's Table 3 (the published human- and
 # model-written instructions beside the template ones, as in the paper); every other game name
@@ -89,15 +89,10 @@ def collect(results: Path, games: list[str] | None = None) -> list[dict]:
     return episodes
 
 
-def _pct(values: list[float | None]) -> float:
-    """Mean in percent; a missing value (aborted episode) counts as 0."""
-    return round(100.0 * sum(v or 0.0 for v in values) / len(values), 2) if values else float("nan")
-
-
 def _summarise(group: list[dict]) -> dict:
-    return {"episodes": len(group), "played": _pct([1.0 - e["aborted"] for e in group]),
-            "em": _pct([e["em"] for e in group]), "cb": _pct([e["cb"] for e in group]),
-            "es": _pct([e["es"] for e in group]), "f1": _pct([e["f1"] for e in group])}
+    return {"episodes": len(group), "played": percent([1.0 - e["aborted"] for e in group]),
+            "em": percent([e["em"] for e in group]), "cb": percent([e["cb"] for e in group]),
+            "es": percent([e["es"] for e in group]), "f1": percent([e["f1"] for e in group])}
 
 
 def _order(key: tuple) -> tuple:
@@ -179,7 +174,7 @@ def repair(episodes: list[dict]) -> tuple[list[str], list[dict]]:
         used = [e["attempts_used"] for e in group if e["attempts_used"] is not None]
         rows.append({"model": model, "game": game, "experiment": experiment, "feedback_of": group[0]["feedback_of"],
                      "attempts": group[0]["max_attempts"], "episodes": len(group),
-                     "es_at_1": _pct([e["es1"] for e in group]), "es_at_n": _pct([e["es"] for e in group]),
+                     "es_at_1": percent([e["es1"] for e in group]), "es_at_n": percent([e["es"] for e in group]),
                      "first_failures": failures, "repaired": last - first,
                      "repaired_share": round(100.0 * (last - first) / failures, 2) if failures else float("nan"),
                      "mean_attempts": round(sum(used) / len(used), 2) if used else float("nan")})
@@ -203,7 +198,7 @@ def table3_markdown(rows: list[dict], title: str, keys: list[str]) -> str:
         body.append(line)
     played = {m: [r for r in rows if r["model"] == m] for m in models}
     note = "; ".join(f"{m}: {sum(r['episodes'] for r in rs)} episodes, "
-                     f"{_pct([r['played'] / 100 for r in rs for _ in range(r['episodes'])]):.2f}% played"
+                     f"{percent([r['played'] / 100 for r in rs for _ in range(r['episodes'])]):.2f}% played"
                      for m, rs in played.items())
     return f"## {title}\n\nEM = exact match, CB = CodeBLEU, ES = execution success (%). {note}.\n\n" + markdown_table(header, body)
 
@@ -245,7 +240,7 @@ def run(args: argparse.Namespace) -> int:
                    "repaired share", "mean attempts"], [[r[h] for h in header] for r in rows])
         (out / "repair.md").write_text(md, encoding="utf-8")
         written += ["repair.md", "repair.csv"]
-    written += dialogue_table.write(args.results, out, args.game)  # cobot_describe's dialogue modes
+    written += dialogue_table.write(episodes, out)  # cobot_describe's dialogue modes
     header, rows = errors(episodes)
     write_csv(out / "errors.csv", header, rows)
     md = "# Error categories (episodes per category)\n\n" + markdown_table(header, [[r[h] for h in header] for r in rows])
