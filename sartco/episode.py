@@ -55,7 +55,6 @@ def round_score(k: int) -> str:
 # ---------------------------------------------------------------------------- interactions.json keys
 BUILD_KEY = "sartco_build"            # one build's record (sartco.clem.building.BuildRecord.to_json)
 ATTEMPTS_KEY = "sartco_attempts"      # every build of an episode, in order
-MAX_ATTEMPTS_KEY = "sartco_max_attempts"  # the attempts the experiment allows (sartco.clem.feedback.max_attempts)
 INSTRUCTION_KEY = "sartco_instruction"  # the describer's instruction: {"text", "error", "combo_name"}
 DIALOGUE_KEY = "sartco_dialogue"      # the describe dialogue's log
 PAPER_KEY = "sartco_paper"            # the paper protocol's reading: {"em", "cb", "es", "turns": [...]}

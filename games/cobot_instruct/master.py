@@ -14,7 +14,7 @@ Episode = one instance of in/instances.json (sartco.episode.InstructEpisode):
   gold_turns    the gold code of each turn (what `mock` answers)
   target        the target board in canonical cells form; rows, cols; task
 Multi-turn: the builder's code accumulates over the turns and is executed once at the end.
-Feedback experiments (experiment field `attempts` N > 1, logged under `sartco_max_attempts`):
+Feedback experiments (experiment field `attempts` N > 1):
 after a failed attempt the builder gets sartco.clem.feedback's message (error code and message,
 or "the board you built differs", with the built board as grid_text; never the target) and
 answers with the complete corrected code, run on a fresh board, up to N attempts. An answer
@@ -41,7 +41,7 @@ from sartco.clem.paper import PAPER_EPISODE_FIELDS, PaperScorer, finish_paper, i
 from sartco.clem.parsing import parse_code
 from sartco.clem.players import Builder
 from sartco.clem.transcript import MarkdownTranscript
-from sartco.episode import ATTEMPTS_KEY, MAX_ATTEMPTS_KEY, InstructEpisode, PaperProtocolEpisode
+from sartco.episode import ATTEMPTS_KEY, InstructEpisode, PaperProtocolEpisode
 
 
 class CobotInstruct(MarkdownTranscript, DialogueGameMaster):
@@ -88,7 +88,6 @@ class CobotInstruct(MarkdownTranscript, DialogueGameMaster):
         self.set_context_for(self.builder, feedback_for(record, attempts_left=left))
 
     def _on_after_game(self):
-        self.log_key(MAX_ATTEMPTS_KEY, self.max_attempts)  # what the scorer (and so the report) reads
         if self.max_attempts > 1:
             self.log_key(ATTEMPTS_KEY, [a.to_json() for a in self.attempts])
         log_outcome(self)

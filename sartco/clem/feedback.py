@@ -23,7 +23,7 @@ ATTEMPTS_FIELD = "attempts"  # experiment field: attempts per episode, the first
 
 def max_attempts(experiment: dict) -> int:
     """How many attempts an episode of this experiment allows (1 = the paper's protocol). The
-    game master reads it once and logs it (MAX_ATTEMPTS_KEY); the scorer and the report read that."""
+    one rule for the game master and the scorer (the report reads the scorer's Max Attempts)."""
     value = experiment.get(ATTEMPTS_FIELD)
     if value is None:
         return 1

@@ -27,7 +27,7 @@ from clemcore.clemgame import GameScorer, metrics
 
 from sartco.episode import (ATTEMPT_CATEGORIES, ATTEMPTS, ATTEMPTS_KEY, BUILD_KEY, BUILD_SCORES, CATEGORY_SEPARATOR,
                             CELL_F1, CELL_PRECISION, CELL_RECALL, CODEBLEU, ERROR_CATEGORY, ERROR_FAMILY, ES_AT_1,
-                            ES_AT_N, EXACT_MATCH, EXECUTION_SUCCESS, MAX_ATTEMPTS, MAX_ATTEMPTS_KEY, PUTS)
+                            ES_AT_N, EXACT_MATCH, EXECUTION_SUCCESS, MAX_ATTEMPTS, PUTS)
 from sartco.world import ErrorCode, category_family
 
 from .building import BuildRecord
@@ -77,10 +77,8 @@ class BuildScorer(GameScorer):
 
     def log_attempt_scores(self, interactions: dict, final: BuildRecord | None, aborted: bool) -> None:
         """ES@1, ES@N, Attempts, Max Attempts, Attempt Categories - only in feedback experiments
-        (the master logged MAX_ATTEMPTS_KEY > 1)."""
-        n = interactions.get(MAX_ATTEMPTS_KEY)
-        if n is None:  # results recorded before masters logged it: the same parse, of the experiment
-            n = max_attempts(self.experiment)
+        (the experiment allows more than one attempt: sartco.clem.feedback.max_attempts)."""
+        n = max_attempts(self.experiment)
         if n <= 1:
             return
         attempts = [BuildRecord.from_json(a) for a in interactions.get(ATTEMPTS_KEY) or []]

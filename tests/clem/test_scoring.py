@@ -1,5 +1,4 @@
-"""BuildScorer's attempt scores: the master's logged attempt count decides, and results recorded
-before masters logged it are scored from the experiment with the same parse."""
+"""BuildScorer's attempt scores, from the experiment's attempts (the rule the master plays by)."""
 from __future__ import annotations
 
 import math
@@ -8,7 +7,7 @@ from clemcore.clemgame.metrics import KEY_EPISODE_SCORES
 
 from sartco.clem.building import build
 from sartco.clem.scoring import BuildScorer
-from sartco.episode import ATTEMPT_CATEGORIES, ATTEMPTS, ATTEMPTS_KEY, ES_AT_1, ES_AT_N, MAX_ATTEMPTS, MAX_ATTEMPTS_KEY
+from sartco.episode import ATTEMPT_CATEGORIES, ATTEMPTS, ATTEMPTS_KEY, ES_AT_1, ES_AT_N, MAX_ATTEMPTS
 
 TARGET = {"0:0": [["washer", "red"]]}
 
@@ -22,18 +21,13 @@ def scores(experiment: dict, interactions: dict) -> dict:
     return scorer.scores[KEY_EPISODE_SCORES]
 
 
-def test_logged_attempt_count_decides():
-    got = scores({"name": "x", "attempts": 2}, {MAX_ATTEMPTS_KEY: 3})
+def test_attempt_scores_of_a_feedback_experiment():
+    got = scores({"name": "x", "attempts": 3}, {})
     assert (got[ES_AT_1], got[ES_AT_N], got[ATTEMPTS], got[MAX_ATTEMPTS]) == (0, 1, 2, 3)
     assert got[ATTEMPT_CATEGORIES] == "mismatch_color,success"
 
 
-def test_results_without_the_logged_count_are_scored_from_the_experiment():
-    got = scores({"name": "x", "attempts": 3}, {})
-    assert (got[ES_AT_1], got[ES_AT_N], got[MAX_ATTEMPTS]) == (0, 1, 3)
-
-
 def test_single_attempt_experiments_have_no_attempt_scores():
     assert scores({"name": "x"}, {}) == {}
-    assert scores({"name": "x", "attempts": 3}, {MAX_ATTEMPTS_KEY: 1}) == {}
+    assert scores({"name": "x", "attempts": 1}, {}) == {}
     assert not math.isnan(scores({"name": "x", "attempts": 2}, {})[ES_AT_1])
