@@ -69,7 +69,12 @@ def rulebased_code(instructions, task: str, given_code: str = "", rows: int = DE
     try:
         return follow(instructions, task, given_code, rows, cols)
     except FollowError as error:
-        return f"# I cannot follow these instructions: {error}"
+        return cannot_follow(error)
+
+
+def cannot_follow(error) -> str:
+    """The rule-based follower's answer to instructions it cannot read (a comment: it builds nothing)."""
+    return f"# I cannot follow these instructions: {error}"
 
 
 def instruct_answers(model_name: str, episode: dict, *, paper: bool = False) -> AnswerSource:

@@ -21,7 +21,7 @@ from sartco.follower import FollowError, emit, follow
 from sartco.follower.correct import apply_correction, correction_steps, pieces
 from sartco.instances.templates import render
 
-from .answers import Scripted, rulebased_code
+from .answers import Scripted, cannot_follow
 from .dialogue import DONE, Dialogue
 from .players import RULEBASED, AnswerSource, fenced
 
@@ -89,22 +89,22 @@ def rulebased_turn(view: BuilderView) -> tuple[str, str]:
         except FollowError as error:
             problem = problem or str(error)
     if view.correction is not None and view.built is not None:
+        standing = [p for _, p in pieces(view.built)]
         try:
-            steps = apply_correction([p for _, p in pieces(view.built)], view.correction, view.rows, view.cols)
+            steps = apply_correction(standing, view.correction, view.rows, view.cols)
         except FollowError as error:
             if view.questions_left:
                 return "question", _question(str(error))
-            steps = [p for _, p in pieces(view.built)]  # it cannot read the correction: the same board again
+            steps = standing  # it cannot read the correction: the same board again
         if not steps:
             return "code", "# the correction leaves nothing to build"
         return "code", emit.optimal_function(steps, None) if view.task == "optimal_function" else emit.first_order(steps)
     try:
         return "code", _follow(view.instruction, view)
     except FollowError as error:
-        problem = problem or str(error)
-    if view.questions_left:
-        return "question", _question(problem)
-    return "code", rulebased_code(view.instruction, view.task, view.given_code, view.rows, view.cols)
+        if view.questions_left:
+            return "question", _question(problem or str(error))
+        return "code", cannot_follow(error)
 
 
 def _follow(text: str, view: BuilderView) -> str:

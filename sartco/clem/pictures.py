@@ -33,16 +33,16 @@ def attach_pictures(interactions_file: str | Path) -> bool:
     if record is None:
         return False
     folder = interactions_file.parent
-    _draw(folder / PICTURE, record)
-    for k, attempt in enumerate(interactions.get(ATTEMPTS_KEY) or [record], 1):
-        _draw(folder / ATTEMPT_PICTURE.format(k), attempt)
+    final = _svg(record)
+    (folder / PICTURE).write_text(final, encoding="utf-8")
+    for k, attempt in enumerate(interactions.get(ATTEMPTS_KEY) or [record], 1):  # the last is usually the final
+        (folder / ATTEMPT_PICTURE.format(k)).write_text(final if attempt == record else _svg(attempt), encoding="utf-8")
     return True
 
 
-def _draw(path: Path, record: dict) -> None:
-    """Target beside built board (differing cells framed), as SVG at `path`."""
-    path.write_text(diff_svg(record["target"], record["cells"], record.get("rows", DEFAULT_ROWS),
-                             record.get("cols", DEFAULT_COLS)), encoding="utf-8")
+def _svg(record: dict) -> str:
+    """Target beside built board (differing cells framed), as SVG."""
+    return diff_svg(record["target"], record["cells"], record.get("rows", DEFAULT_ROWS), record.get("cols", DEFAULT_COLS))
 
 
 def attach_all(interaction_files) -> int:

@@ -20,7 +20,7 @@ from __future__ import annotations
 import re
 
 from sartco.world.board import parse_key
-from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
+from sartco.world import BRIDGES, DEFAULT_COLS, DEFAULT_ROWS
 
 from .parse import FollowError, Placement, placements
 
@@ -31,11 +31,8 @@ _REMOVE = re.compile(r"^\W*(?:remove|take\s+(?:away|off)|delete)\b", re.IGNORECA
 
 def covered(p: Placement) -> list[tuple[int, int]]:
     """The cells a placement occupies."""
-    if p.shape == "bridge-h":
-        return [(p.x, p.y), (p.x, p.y + 1)]
-    if p.shape == "bridge-v":
-        return [(p.x, p.y), (p.x + 1, p.y)]
-    return [(p.x, p.y)]
+    offset = BRIDGES.get(p.shape)
+    return [(p.x, p.y)] if offset is None else [(p.x, p.y), (p.x + offset[0], p.y + offset[1])]
 
 
 def pieces(cells: dict) -> list[Piece]:
@@ -62,12 +59,13 @@ def correction_steps(built: dict, target: dict) -> tuple[list[Placement], list[P
     wanted = set(pieces(target))
     removed: list[Piece] = []
     gone: set[tuple[int, int, int]] = set()  # (row, col, level) of removed pieces
-    for level, p in pieces(built):  # lowest level first: a removal reaches everything above it
+    standing = pieces(built)
+    for level, p in standing:  # lowest level first: a removal reaches everything above it
         below = any((r, c, lv) in gone for r, c in covered(p) for lv in range(level))
         if below or (level, p) not in wanted:
             removed.append((level, p))
             gone.update((r, c, level) for r, c in covered(p))
-    kept = set(pieces(built)) - set(removed)
+    kept = set(standing) - set(removed)
     additions = [p for level, p in pieces(target) if (level, p) not in kept]
     return [p for _, p in sorted(removed, key=lambda lp: -lp[0])], additions
 
