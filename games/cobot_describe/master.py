@@ -33,16 +33,16 @@ from clemcore.clemgame import DialogueGameMaster, Player
 from clemcore.clemgame.errors import ParseError
 
 from sartco.clem import benchmark
-from sartco.clem.building import BuildRecord, build_for, log_build, parse_failure_for
+from sartco.clem.building import BuildRecord, build_for, end_build, log_build, parse_failure_for
 from sartco.clem.describer import Describer, fill_builder_prompt, log_instruction, parse_instruction
 from sartco.clem.dialogue import (DONE, Dialogue, DialogueLog, DialogueScorer, answer_message, correction_message,
                                   parse_answer, parse_builder_answer, parse_review, question_message, review_message,
                                   settings_of)
 from sartco.clem.dialogue_answers import builder_answers, describer_answers
-from sartco.clem.outcomes import log_outcome, set_attempts_outcome
+from sartco.clem.outcomes import log_outcome
 from sartco.clem.players import Builder
 from sartco.clem.transcript import MarkdownTranscript
-from sartco.episode import ATTEMPTS_KEY, BUILD_KEY, DIALOGUE_KEY, DescribeEpisode
+from sartco.episode import ATTEMPTS_KEY, DIALOGUE_KEY, DescribeEpisode
 from sartco.world import ErrorCode
 
 DESCRIBER_PARSERS = {"instruction": parse_instruction, "answer": parse_answer, "review": parse_review}
@@ -109,8 +109,7 @@ class CobotDescribe(MarkdownTranscript, DialogueGameMaster):
 
     def _end(self):
         """The last build is the episode's result (its board event is logged already)."""
-        self.log_key(BUILD_KEY, self.dialogue.builds[-1].to_json())
-        set_attempts_outcome(self.state, [b.category for b in self.dialogue.builds])
+        end_build(self, self.dialogue.builds[-1], self.dialogue.builds)
 
     def _on_parse_error(self, error: ParseError):
         e, d = self.episode, self.dialogue

@@ -2,8 +2,9 @@
 
 The game master calls `build_for(instance, ...)` (`build` with the instance's board fields) once
 per episode (or once per attempt in a repair experiment) and ends the episode with
-`finish_build`, which logs the final record with `log_build` and moves the game state with
-sartco.clem.outcomes. The scorer reads the record back with `BuildRecord.from_json`; it never
+`finish_build`: the build's board event (`log_build`), then `end_build`, which records it for the
+scorer and moves the game state with sartco.clem.outcomes (a dialogue whose builds' events are
+logged as they happen calls `end_build` alone). The scorer reads the record back with `BuildRecord.from_json`; it never
 executes anything.
 """
 from __future__ import annotations
@@ -142,7 +143,14 @@ def finish_build(game_master, record: BuildRecord, attempts: list[BuildRecord] |
     and hand ES, cell F1, category and puts to clemcore's step info (what a gym env's `info` and
     reward function see, sartco.clem.training)."""
     attempts = attempts or [record]
-    log_build(game_master, record, attempt=len(attempts))
+    log_build(game_master, record, final=False, attempt=len(attempts))
+    end_build(game_master, record, attempts)
+
+
+def end_build(game_master, record: BuildRecord, attempts: list[BuildRecord]) -> None:
+    """The episode's result is `record`, the last of `attempts`, whose board event is logged:
+    record it for the scorer (BUILD_KEY), set the outcome and the step info."""
+    game_master.log_key(BUILD_KEY, record.to_json())
     set_attempts_outcome(game_master.state, [a.category for a in attempts])
     game_master.info.update({key: getattr(record, name) for key, name in INFO_FIELDS.items()})
 
