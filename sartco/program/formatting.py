@@ -14,13 +14,13 @@ from .budget import Forbidden, checked_len
 from .conversions import to_ascii, to_repr, to_str
 
 SPEC_DIGITS = 3  # most digits of a width or precision
-_LONG_NUMBER = re.compile(r"\d{%d,}" % (SPEC_DIGITS + 1))
+LONG_NUMBER = re.compile(r"\d{%d,}" % (SPEC_DIGITS + 1))  # a width or precision with too many digits
 # one printf-style conversion: %[(key)][flags][width][.precision][length]type
 _PRINTF = re.compile(r"%(?:\([^)]*\))?[-#0 +]*(\*|\d+)?(?:\.(\*|\d*))?")
 
 
 def _check_spec(spec: str) -> str:
-    if _LONG_NUMBER.search(spec):
+    if LONG_NUMBER.search(spec):
         raise Forbidden(f"format widths and precisions above {'9' * SPEC_DIGITS} are not allowed: {spec[:40]!r}")
     return spec
 

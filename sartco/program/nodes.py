@@ -20,18 +20,16 @@ spell, so a program can neither reach nor shadow them:
 from __future__ import annotations
 
 import ast
-import re
 
 from .allowed import ATTRIBUTES, DENIED, FIELDS, PROVIDED
 from .budget import Forbidden
-from .formatting import SPEC_DIGITS
+from .formatting import LONG_NUMBER, SPEC_DIGITS
 from .modules import MEMBERS, refusal
 
 A = ast
 CHECKED_OPS = {ast.Add: "$add", ast.Mult: "$mul", ast.Pow: "$pow", ast.LShift: "$lshift", ast.Mod: "$mod"}
 INPLACE_OPS = {ast.Add: "$iadd", ast.Mult: "$imul", ast.Pow: "$ipow", ast.LShift: "$ilshift", ast.Mod: "$imod"}
 
-_SPEC_NUMBER = re.compile(r"\d+")
 
 
 def fail(node, text: str):
@@ -124,7 +122,7 @@ def _r_formatted(n, walk):
     parts = spec.values if type(spec) is ast.JoinedStr else [spec]
     if all(type(part) is ast.Constant for part in parts):
         for part in parts:
-            if any(len(number) > SPEC_DIGITS for number in _SPEC_NUMBER.findall(str(part.value))):
+            if LONG_NUMBER.search(str(part.value)):
                 fail(n, f"f-string format widths and precisions above {'9' * SPEC_DIGITS} are not allowed")
         return
     n.value = _call("$fstr", [n.value, _loc(ast.Constant(n.conversion), n), spec], n)
