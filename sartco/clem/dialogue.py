@@ -208,9 +208,7 @@ class DialogueScorer(DescribeScorer):
             QUESTIONS_ASKED: log.count("question"), CORRECTIONS_SENT: log.count("correction"),
             DESCRIBER_WORDS: log.describer_words,
         }
-        for k in range(settings.corrections + 1):
-            values[round_score(k)] = es[min(k, len(es) - 1)] if played else nan
         for name in DIALOGUE_SCORES:
             self.log_episode_score(name, values[name])
         for k in range(settings.corrections + 1):
-            self.log_episode_score(round_score(k), values[round_score(k)])
+            self.log_episode_score(round_score(k), es[min(k, len(es) - 1)] if played else nan)

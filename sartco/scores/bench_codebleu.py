@@ -18,7 +18,7 @@ import statistics
 import time
 from pathlib import Path
 
-from sartco.dataset import BOARD_KINDS, SPLITS
+from sartco.instances.storage import FILE_ORDER
 
 from . import metrics
 from .metrics import LANG, WEIGHTS, code_bleu
@@ -43,7 +43,7 @@ def main(argv: list[str] | None = None) -> int:
     from codebleu import calc_codebleu
 
     programs = []
-    for name in sorted(kind.dataset_file(split) for kind in BOARD_KINDS for split in SPLITS):
+    for name in sorted(FILE_ORDER):
         path = args.dataset / name
         if not path.is_file():
             continue
