@@ -27,7 +27,7 @@ import operator
 import string
 import typing
 
-from . import budget, formatting
+from . import budget, formatting, json_module
 from .budget import Forbidden, too_big, too_long
 from .conversions import INT
 
@@ -166,6 +166,7 @@ _FACTORIES = {
     "operator": lambda: {**{n: getattr(operator, n) for n in _OPERATOR}, "add": budget.add, "mul": budget.mul,
                          "pow": budget.power, "mod": formatting.mod, "lshift": budget.lshift},
     "string": lambda: {n: getattr(string, n) for n in _STRING},
+    "json": lambda: dict(json_module.MEMBERS),
     "numpy": lambda: {"ndarray": ndarray, "array": array, "zeros": zeros, "ones": ones, "full": full,
                       "arange": arange, "int_": INT, "int32": INT, "int64": INT, "float64": float,
                       "float32": float, "pi": math.pi, "e": math.e, "sqrt": math.sqrt, "floor": math.floor,
