@@ -33,6 +33,7 @@ from clemcore.clemgame import GameInstanceGenerator
 from sartco.clem.describer import INSTRUCTION_SLOT
 from sartco.clem.dialogue import DEFAULT_CORRECTIONS, DEFAULT_QUESTIONS, MODES, clarify_note
 from sartco.clem.episodes import board_fields
+from sartco.clem.instance_values import require_episodes
 from sartco.dataset import BOARD_KINDS, DESCRIBED_TASK, BoardKind
 from sartco.episode import DescribeEpisode, DescribeExperiment
 from sartco.errors import UserError
@@ -95,6 +96,7 @@ class CobotDescribeInstanceGenerator(GameInstanceGenerator):
                         describer_prompt=describer_prompt(record), builder_prompt=prompt,
                         template_instruction=instruction_text(record, task, "template"), record=record))
                     game_id += 1
+        require_episodes(self.instances, dataset)
 
 
 def main(argv=None) -> int:

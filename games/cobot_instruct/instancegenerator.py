@@ -63,6 +63,7 @@ from pathlib import Path
 from clemcore.clemgame import GameInstanceGenerator
 
 from sartco.clem.episodes import instruct_episode
+from sartco.clem.instance_values import require_episodes
 from sartco.dataset import BOARD_KINDS, DESCRIBED_TASK, REGULAR_COMPLEX, REGULAR_SIMPLE, SIMPLE, BoardKind, board_kind
 from sartco.episode import InstructExperiment
 from sartco.errors import UserError
@@ -117,6 +118,9 @@ class PaperInstanceGenerator(GameInstanceGenerator):
         from sartco.paper.episodes import DEFAULT_PUBLISHED, build_episodes
 
         published_dir = published_dir or DEFAULT_PUBLISHED
+        if not published_dir.is_dir():
+            raise UserError(f"{published_dir}: no such folder (the published SARTCo files; the default is "
+                            f"../shared/sartco-data/published); no file written")
         cells: dict[tuple, list[dict]] = {}
         for ep in build_episodes(published_dir=published_dir, generated_dir=dataset_dir):
             cells.setdefault((ep.file, ep.variant), []).append(ep.to_json())
@@ -130,6 +134,7 @@ class PaperInstanceGenerator(GameInstanceGenerator):
             exp.move_to_end("game_instances")
             for game_id, episode in enumerate(episodes):
                 self.add_game_instance(exp, game_id).update(instance_fields(episode))
+        require_episodes(self.instances, published_dir)
 
 
 class CobotInstructInstanceGenerator(GameInstanceGenerator):
@@ -158,10 +163,14 @@ class CobotInstructInstanceGenerator(GameInstanceGenerator):
             inst = self.add_game_instance(exp, game_id)
             inst.update(instruct_episode(record, task, source, examples, sections))
 
-    def on_generate(self, seed: int, dataset_dir: Path, published_dir: Path | None = None,
-                    n_examples: int = N_EXAMPLES, ablation_episodes: int = ABLATION_EPISODES,
-                    describers_dir: Path | None = None, part: str = "cells", per_experiment: int | None = None,
-                    train_episodes: int = 0):
+    def on_generate(self, seed: int, dataset_dir: Path, published_dir: Path | None = None, **kwargs):
+        self.add_all(seed, dataset_dir, published_dir, **kwargs)
+        require_episodes(self.instances, kwargs.get("describers_dir") or published_dir or dataset_dir)
+
+    def add_all(self, seed: int, dataset_dir: Path, published_dir: Path | None = None,
+                n_examples: int = N_EXAMPLES, ablation_episodes: int = ABLATION_EPISODES,
+                describers_dir: Path | None = None, part: str = "cells", per_experiment: int | None = None,
+                train_episodes: int = 0):
         """part: "cells" (the Table 3 cells, test split; per_experiment: only the first episodes of
         each, a smoke file) "ablations" (val split) or "train" (the train split, for training; train_episodes: the
         first N boards of each cell, 0: all)."""
