@@ -60,10 +60,8 @@ import os
 import sys
 from pathlib import Path
 
-from clemcore.clemgame import GameInstanceGenerator
-
 from sartco.clem.episodes import instruct_episode
-from sartco.clem.instance_values import require_episodes
+from sartco.clem.instance_values import InstanceGenerator
 from sartco.dataset import BOARD_KINDS, DESCRIBED_TASK, REGULAR_COMPLEX, REGULAR_SIMPLE, SIMPLE, BoardKind, board_kind
 from sartco.episode import InstructExperiment
 from sartco.errors import UserError
@@ -106,7 +104,7 @@ def records(files: dict, kind: BoardKind, split: str) -> list[dict]:
     return files[name]
 
 
-class PaperInstanceGenerator(GameInstanceGenerator):
+class PaperInstanceGenerator(InstanceGenerator):
     """in/instances_paper.json: the paper protocol's episodes, one experiment per Table 3 cell."""
 
     def __init__(self):
@@ -117,10 +115,7 @@ class PaperInstanceGenerator(GameInstanceGenerator):
         from sartco.paper import PROTOCOL
         from sartco.paper.episodes import DEFAULT_PUBLISHED, build_episodes
 
-        published_dir = published_dir or DEFAULT_PUBLISHED
-        if not published_dir.is_dir():
-            raise UserError(f"{published_dir}: no such folder (the published SARTCo files; the default is "
-                            f"../shared/sartco-data/published); no file written")
+        published_dir = self.source = published_dir or DEFAULT_PUBLISHED
         cells: dict[tuple, list[dict]] = {}
         for ep in build_episodes(published_dir=published_dir, generated_dir=dataset_dir):
             cells.setdefault((ep.file, ep.variant), []).append(ep.to_json())
@@ -134,10 +129,9 @@ class PaperInstanceGenerator(GameInstanceGenerator):
             exp.move_to_end("game_instances")
             for game_id, episode in enumerate(episodes):
                 self.add_game_instance(exp, game_id).update(instance_fields(episode))
-        require_episodes(self.instances, published_dir)
 
 
-class CobotInstructInstanceGenerator(GameInstanceGenerator):
+class CobotInstructInstanceGenerator(InstanceGenerator):
 
     def __init__(self, feedback_attempts: int | None = None):
         """feedback_attempts: None for the paper's experiments; N >= 2 for the feedback experiments
@@ -163,17 +157,14 @@ class CobotInstructInstanceGenerator(GameInstanceGenerator):
             inst = self.add_game_instance(exp, game_id)
             inst.update(instruct_episode(record, task, source, examples, sections))
 
-    def on_generate(self, seed: int, dataset_dir: Path, published_dir: Path | None = None, **kwargs):
-        self.add_all(seed, dataset_dir, published_dir, **kwargs)
-        require_episodes(self.instances, kwargs.get("describers_dir") or published_dir or dataset_dir)
-
-    def add_all(self, seed: int, dataset_dir: Path, published_dir: Path | None = None,
-                n_examples: int = N_EXAMPLES, ablation_episodes: int = ABLATION_EPISODES,
-                describers_dir: Path | None = None, part: str = "cells", per_experiment: int | None = None,
-                train_episodes: int = 0):
+    def on_generate(self, seed: int, dataset_dir: Path, published_dir: Path | None = None,
+                    n_examples: int = N_EXAMPLES, ablation_episodes: int = ABLATION_EPISODES,
+                    describers_dir: Path | None = None, part: str = "cells", per_experiment: int | None = None,
+                    train_episodes: int = 0):
         """part: "cells" (the Table 3 cells, test split; per_experiment: only the first episodes of
         each, a smoke file) "ablations" (val split) or "train" (the train split, for training; train_episodes: the
         first N boards of each cell, 0: all)."""
+        self.source = describers_dir or published_dir or dataset_dir
         manifest, files = load_dataset(dataset_dir)
         info = dataset_info(manifest, dataset_dir, seed, n_examples)
         self.instances["dataset"] = info
@@ -290,7 +281,7 @@ def main(argv=None) -> int:
     return 0
 
 
-def _write(gen: GameInstanceGenerator, name: str, **kwargs) -> bool:
+def _write(gen: InstanceGenerator, name: str, **kwargs) -> bool:
     """Write one instance file and say what it holds, or say in one line why it could not."""
     try:
         path = gen.generate(name, **kwargs)

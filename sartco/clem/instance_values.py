@@ -5,7 +5,8 @@ the episode mid-run.
 
     experiment_problem(experiment) -> str | None   known board kinds, tasks, splits, modes, variants
     episode_problem(episode) -> str | None         board size, target, turns
-    require_episodes(instances, source)            a generator never writes a file without episodes
+    InstanceGenerator                              the games' generator base: it never writes an
+                                                   instance file without episodes (require_episodes)
 
 Each problem is one phrase naming the field and its value (the caller puts file and episode in
 front). The board size is the world's (DEFAULT_ROWS x DEFAULT_COLS: every prompt, ours and the
@@ -16,6 +17,9 @@ board, of the world's shapes and colours, at most MAX_DEPTH high, and buildable 
 from __future__ import annotations
 
 import json
+from pathlib import Path
+
+from clemcore.clemgame import GameInstanceGenerator
 
 from sartco.dataset import BOARD_TYPES, OBJECT_TYPES, SPLITS, TASKS
 from sartco.episode import DIALOGUE_MODES
@@ -97,4 +101,17 @@ def require_episodes(instances: dict, source) -> None:
     """UserError unless the generated instances hold an episode: a generator whose input is
     missing (e.g. ../shared) must say so, not replace an instance file with an empty one."""
     if not any(e.get("game_instances") for e in instances.get("experiments", [])):
-        raise UserError(f"{source}: no episodes were generated from it (missing or empty); no file written")
+        missing = "no such file or folder" if not Path(source).exists() else "no episodes were generated from it"
+        raise UserError(f"{source}: {missing}; no instance file written")
+
+
+class InstanceGenerator(GameInstanceGenerator):
+    """The games' GameInstanceGenerator: it writes no instance file without episodes (on_generate
+    sets `source`, the input that the line names)."""
+
+    source = "the generator's input"
+
+    def store_file(self, data, file_name: str, sub_dir: str | None = None) -> str:
+        if sub_dir == "in":
+            require_episodes(data, self.source)
+        return super().store_file(data, file_name, sub_dir=sub_dir)

@@ -128,8 +128,7 @@ def test_paper_generator_refuses_a_missing_shared_folder(tmp_path, monkeypatch, 
     monkeypatch.setattr(paper_episodes, "DEFAULT_PUBLISHED", missing)
     generator, kept = copied_generator(tmp_path)
     assert generator.main(["--protocol", "paper", *DATASET]) == 2
-    assert capsys.readouterr().err == f"instancegenerator: {missing}: no such folder (the published SARTCo files; " \
-                                      f"the default is ../shared/sartco-data/published); no file written\n"
+    assert capsys.readouterr().err == f"instancegenerator: {missing}: no such file or folder; no instance file written\n"
     assert kept.read_text() == KEPT
 
 
@@ -139,5 +138,5 @@ def test_paper_generator_refuses_a_folder_without_episodes(tmp_path, capsys):
     generator, kept = copied_generator(tmp_path)
     assert generator.main(["--protocol", "paper", "--paper-data", str(empty), *DATASET]) == 2
     assert capsys.readouterr().err == \
-        f"instancegenerator: {empty}: no episodes were generated from it (missing or empty); no file written\n"
+        f"instancegenerator: {empty}: no episodes were generated from it; no instance file written\n"
     assert kept.read_text() == KEPT
