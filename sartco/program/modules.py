@@ -27,9 +27,10 @@ import operator
 import string
 import typing
 
-from . import budget, formatting, json_module
+from . import budget, formatting
 from .budget import Forbidden, too_big, too_long
 from .conversions import INT
+from .json_module import MEMBERS as JSON_MEMBERS
 
 
 class Module:
@@ -166,12 +167,12 @@ _FACTORIES = {
     "operator": lambda: {**{n: getattr(operator, n) for n in _OPERATOR}, "add": budget.add, "mul": budget.mul,
                          "pow": budget.power, "mod": formatting.mod, "lshift": budget.lshift},
     "string": lambda: {n: getattr(string, n) for n in _STRING},
-    "json": lambda: dict(json_module.MEMBERS),
     "numpy": lambda: {"ndarray": ndarray, "array": array, "zeros": zeros, "ones": ones, "full": full,
                       "arange": arange, "int_": INT, "int32": INT, "int64": INT, "float64": float,
                       "float32": float, "pi": math.pi, "e": math.e, "sqrt": math.sqrt, "floor": math.floor,
                       "ceil": math.ceil, "abs": abs},
 }
+_FACTORIES["json"] = lambda: dict(JSON_MEMBERS)  # json_module.py
 _MEMBERS_CACHE = {name: make() for name, make in _FACTORIES.items()}
 MEMBERS = {name: frozenset(members) for name, members in _MEMBERS_CACHE.items()}  # for allowed.py and nodes.py
 
