@@ -28,11 +28,10 @@ import argparse
 import sys
 from pathlib import Path
 
-from clemcore.clemgame import GameInstanceGenerator
-
 from sartco.clem.describer import INSTRUCTION_SLOT
 from sartco.clem.dialogue import DEFAULT_CORRECTIONS, DEFAULT_QUESTIONS, MODES, clarify_note
 from sartco.clem.episodes import board_fields
+from sartco.clem.instance_values import InstanceGenerator
 from sartco.dataset import BOARD_KINDS, DESCRIBED_TASK, BoardKind
 from sartco.episode import DescribeEpisode, DescribeExperiment
 from sartco.errors import UserError
@@ -60,7 +59,7 @@ def spread(items: list, n: int | None) -> list:
     return [items[i * len(items) // n] for i in range(n)]
 
 
-class CobotDescribeInstanceGenerator(GameInstanceGenerator):
+class CobotDescribeInstanceGenerator(InstanceGenerator):
 
     def __init__(self):
         super().__init__(str(GAME_DIR))
@@ -68,6 +67,7 @@ class CobotDescribeInstanceGenerator(GameInstanceGenerator):
     def on_generate(self, seed: int, dataset: Path = REPO / "instances" / "v1", examples: int = 5,
                     per_experiment: int | None = None, questions: int = DEFAULT_QUESTIONS,
                     corrections: int = DEFAULT_CORRECTIONS, **kwargs):
+        self.source = dataset
         manifest, files = load_dataset(dataset)
         self.instances["dataset"] = {"version": manifest["version"], "seed": manifest["seed"],
                                      "source": manifest["source"], "split": "test"}

@@ -60,9 +60,8 @@ import os
 import sys
 from pathlib import Path
 
-from clemcore.clemgame import GameInstanceGenerator
-
 from sartco.clem.episodes import instruct_episode
+from sartco.clem.instance_values import InstanceGenerator
 from sartco.dataset import BOARD_KINDS, DESCRIBED_TASK, REGULAR_COMPLEX, REGULAR_SIMPLE, SIMPLE, BoardKind, board_kind
 from sartco.episode import InstructExperiment
 from sartco.errors import UserError
@@ -105,7 +104,7 @@ def records(files: dict, kind: BoardKind, split: str) -> list[dict]:
     return files[name]
 
 
-class PaperInstanceGenerator(GameInstanceGenerator):
+class PaperInstanceGenerator(InstanceGenerator):
     """in/instances_paper.json: the paper protocol's episodes, one experiment per Table 3 cell."""
 
     def __init__(self):
@@ -116,7 +115,7 @@ class PaperInstanceGenerator(GameInstanceGenerator):
         from sartco.paper import PROTOCOL
         from sartco.paper.episodes import DEFAULT_PUBLISHED, build_episodes
 
-        published_dir = published_dir or DEFAULT_PUBLISHED
+        published_dir = self.source = published_dir or DEFAULT_PUBLISHED
         cells: dict[tuple, list[dict]] = {}
         for ep in build_episodes(published_dir=published_dir, generated_dir=dataset_dir):
             cells.setdefault((ep.file, ep.variant), []).append(ep.to_json())
@@ -132,7 +131,7 @@ class PaperInstanceGenerator(GameInstanceGenerator):
                 self.add_game_instance(exp, game_id).update(instance_fields(episode))
 
 
-class CobotInstructInstanceGenerator(GameInstanceGenerator):
+class CobotInstructInstanceGenerator(InstanceGenerator):
 
     def __init__(self, feedback_attempts: int | None = None):
         """feedback_attempts: None for the paper's experiments; N >= 2 for the feedback experiments
@@ -165,6 +164,7 @@ class CobotInstructInstanceGenerator(GameInstanceGenerator):
         """part: "cells" (the Table 3 cells, test split; per_experiment: only the first episodes of
         each, a smoke file) "ablations" (val split) or "train" (the train split, for training; train_episodes: the
         first N boards of each cell, 0: all)."""
+        self.source = describers_dir or published_dir or dataset_dir
         manifest, files = load_dataset(dataset_dir)
         info = dataset_info(manifest, dataset_dir, seed, n_examples)
         self.instances["dataset"] = info
@@ -281,7 +281,7 @@ def main(argv=None) -> int:
     return 0
 
 
-def _write(gen: GameInstanceGenerator, name: str, **kwargs) -> bool:
+def _write(gen: InstanceGenerator, name: str, **kwargs) -> bool:
     """Write one instance file and say what it holds, or say in one line why it could not."""
     try:
         path = gen.generate(name, **kwargs)

@@ -18,7 +18,9 @@ experiment is "0 rows", exit 0). So under `clem run` the constructor reads the i
 itself (the one clemgame.json or `-i` names) and the `-e` option from clem's command line, and
 before any model is asked stops with one line naming the file, the experiment and the field
 (exit code 2): missing or truncated file, no experiments, an episode without a field the master
-reads or with a field of the wrong JSON type, an unknown experiment name (with the list).
+reads or with a field of the wrong JSON type, a bad value (instance_values.py: board size, target
+shapes, colours, cells and buildability, empty turns, unknown board kinds, tasks, modes, variants),
+an unknown experiment name (with the list).
 """
 from __future__ import annotations
 
@@ -32,6 +34,7 @@ from clemcore.clemgame import GameBenchmark
 
 from sartco.episode import PlayedEpisode
 
+from .instance_values import episode_problem, experiment_problem
 from .pictures import attach_all
 
 
@@ -81,6 +84,9 @@ def check_instances(path: str, fields, experiment: str | None = None) -> int:
         episodes = exp.get("game_instances")
         if not isinstance(episodes, list):
             raise InstanceFileError(f"{path}: experiment {name}: no 'game_instances' list")
+        problem = experiment_problem(exp)
+        if problem:
+            raise InstanceFileError(f"{path}: experiment {name}: {problem}")
         for i, episode in enumerate(episodes):
             where = f"{path}: experiment {name}, episode {i}"
             if not isinstance(episode, dict):
@@ -94,6 +100,9 @@ def check_instances(path: str, fields, experiment: str | None = None) -> int:
                 if not isinstance(value, kind) or (kind is int and isinstance(value, bool)):
                     raise InstanceFileError(f"{where}: field '{field}' is {type(value).__name__} "
                                             f"{json.dumps(value)[:40]}, expected {_JSON_TYPE.get(kind, kind.__name__)}")
+            problem = episode_problem(episode)  # the values (instance_values.py)
+            if problem:
+                raise InstanceFileError(f"{where}: {problem}")
     if experiment is not None and experiment not in names:
         raise InstanceFileError(f"{path}: no experiment '{experiment}' (experiments: {', '.join(names)})")
     return sum(len(e["game_instances"]) for e in experiments if experiment in (None, e["name"]))

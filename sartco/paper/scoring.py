@@ -13,7 +13,8 @@ Per turn, over the keys present in both gold and prediction (output; or function
   [pred], lang="python", weights 0.25 x 4) with its data-flow order fixed, see its docstring),
   rounded to 3 decimals, > 0.5; an empty prediction fails. Table 3's CB is this pass rate.
 - ES: each key but usage runs alone on a fresh 8x8 board through sartco.program.execute (the
-  sandbox; never exec), after dropping one trailing newline, ";", "." or ","; regular boards get
+  sandbox; never exec) with PAPER semantics (the authors' exec inside a function: separate
+  globals and locals, the board passed in is the one scored; sartco.program.namespaces), after dropping one trailing newline, ";", "." or ","; regular boards get
   the sample's gold object function + "\n" in front of both gold and prediction. A program
   containing the text "while" fails (the authors' scorer refused it: category `forbidden`,
   message "While loop not supported"); a program that raises fails with its ErrorCode; a board
@@ -29,7 +30,7 @@ from __future__ import annotations
 from dataclasses import asdict, dataclass
 from functools import lru_cache
 
-from sartco.program import compare, execute
+from sartco.program import PAPER, compare, execute
 from sartco.scores import code_bleu
 from sartco.world import ErrorCode
 
@@ -99,7 +100,7 @@ def es_program(code: str, given_function: str = "") -> str:
 
 @lru_cache(maxsize=4096)
 def _gold_run(program: str):
-    return execute(program)
+    return execute(program, semantics=PAPER)
 
 
 def execution(prediction: str, gold: str, given_function: str = "") -> tuple[bool, str | None, str]:
@@ -107,7 +108,7 @@ def execution(prediction: str, gold: str, given_function: str = "") -> tuple[boo
     program = es_program(prediction, given_function)
     if "while" in program:
         return False, str(ErrorCode.FORBIDDEN), WHILE_REFUSAL
-    ex = execute(program)
+    ex = execute(program, semantics=PAPER)
     if not ex.ok:
         return False, str(ErrorCode(ex.error)), ex.message or ""
     gold_run = _gold_run(es_program(gold, given_function))

@@ -16,7 +16,7 @@ comprehensions, try/except/else/finally, raise, assert, del, global/nonlocal, an
 `_` names, set/dict/list displays, the common methods of str/list/dict/set/tuple (and of
 collections' defaultdict/Counter/deque), f-strings, `str.format` and `%` formatting, map, filter,
 isinstance, float, next/iter, and imports of math, itertools, functools, typing, collections,
-copy, operator, string and numpy (a stand-in: `np.ndarray` for annotations, small helpers that
+copy, operator, string, json and numpy (a stand-in: `np.ndarray` for annotations, small helpers that
 return lists), all under the budgets of Limits.
 
 Refused (`forbidden`, with the reason in the message), because they reach the interpreter, the
@@ -49,6 +49,8 @@ Modules (each one's docstring has the details):
   methods.py      the methods a program may call per type, and the checked ones
   modules.py      the stand-in modules a program may import
   runtime.py      run one prepared program in a minimal namespace, map outcomes to ErrorCode
+  namespaces.py   the paper protocol's namespace (the authors' exec: separate globals and locals)
+  json_module.py  the json stand-in (plain data, output counted against the length budget)
   worker.py       the worker process loop (JSON lines over pipes, rlimits)
   driver.py       the parent's side of one worker: chunks, answers, hard kill on wall time
   pool.py         persistent workers, batching, restarts; execute(), execute_many()
@@ -57,11 +59,18 @@ Modules (each one's docstring has the details):
   lines.py        one line of the `sartco execute` contract (parsed and answered inside the workers)
   serve.py        `sartco execute` (JSON lines; `sartco bench-execute`, sartco.bench_execute, measures it)
 
+Semantics (`execute(..., semantics=PAPER)`, also execute_many): MODULE (the default, our protocol)
+runs the program as a script's module; PAPER (the paper protocol) as the authors' scorer ran it,
+`exec(code)` inside a function: separate globals and locals, `np`, `json`, `Counter`, `deepcopy`
+bound without an import, `__name__` not "__main__", the board passed in is the one scored
+(namespaces.py; json_module.py is the json stand-in).
+
 `execute_many(programs, rows, cols, limits, workers=None)` runs a batch (split over up to two
 worker processes); `shutdown()` kills the workers (they restart on the next call).
 """
 from .compare import Comparison, compare, judge
-from .execution import Execution, Limits
+from .execution import MODULE, PAPER, Execution, Limits
 from .pool import execute, execute_many, shutdown
 
-__all__ = ["execute", "execute_many", "shutdown", "compare", "judge", "Execution", "Comparison", "Limits"]
+__all__ = ["execute", "execute_many", "shutdown", "compare", "judge", "Execution", "Comparison", "Limits",
+           "MODULE", "PAPER"]

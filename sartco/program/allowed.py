@@ -27,7 +27,7 @@ ALLOWED_BUILTINS = frozenset(
     "chr ord pow format repr ascii hex bin oct callable hash slice".split()
 ) | EXCEPTIONS
 PROVIDED = frozenset({"put", "init_board"})  # `board` is provided too, but may be rebound
-DENIED = frozenset(dir(builtins)) - ALLOWED_BUILTINS - {"True", "False", "None", "Ellipsis", "NotImplemented"}
+DENIED = frozenset(dir(builtins)) - ALLOWED_BUILTINS - {"True", "False", "None", "Ellipsis", "NotImplemented", "__name__"}
 ATTRIBUTES = METHODS.union(*MEMBERS.values())  # every attribute name a program may read
 
 # the fields of each allowed node type that hold child nodes; a type not listed is forbidden

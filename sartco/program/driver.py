@@ -32,7 +32,7 @@ from pathlib import Path
 
 from sartco.world import ErrorCode
 
-from .execution import Execution, Limits
+from .execution import MODULE, Execution, Limits
 from .worker import OUT_OF_MEMORY, RETIRED
 
 E = ErrorCode
@@ -112,7 +112,7 @@ class Worker:
         return self.lines.popleft()
 
     def _send(self, stdin, mode: str, items: list[bytes], rows: int, cols: int, limits: Limits, cache: bool,
-              ahead: bool):
+              ahead: bool, semantics: str):
         """Write the items in chunks. For more than fits in the pipe at once this runs in a thread
         of its own: the worker finds its next chunk waiting when it finishes one, and a full pipe
         never blocks the reading of answers."""
@@ -120,13 +120,15 @@ class Worker:
             for k in range(0, len(items), CHUNK):
                 chunk = items[k:k + CHUNK]
                 header = json.dumps({"limits": limits.as_list(), "rows": rows, "cols": cols, "cache": cache,
-                                     "mode": mode, "items": len(chunk), "ahead": ahead}).encode()
+                                     "mode": mode, "items": len(chunk), "ahead": ahead,
+                                     "semantics": semantics}).encode()
                 stdin.write(b"\n".join([header, *chunk]) + b"\n")
                 stdin.flush()
         except (OSError, ValueError):
             pass  # the worker died or was killed: the reader finds out and reports it
 
-    def run(self, mode: str, items: list[bytes], rows: int, cols: int, limits: Limits, cache: bool) -> list:
+    def run(self, mode: str, items: list[bytes], rows: int, cols: int, limits: Limits, cache: bool,
+            semantics: str = MODULE) -> list:
         """One answer per item: the worker's answer line (bytes), or an Execution for an item
         whose worker timed out or died (the rest then goes to a fresh worker)."""
         results: list = []
@@ -140,7 +142,7 @@ class Worker:
                 self.kill()
                 results.extend(failed(E.RUNTIME_ERROR, f"sandbox unavailable: {exc}") for _ in todo)
                 break
-            send = (self.proc.stdin, mode, todo, rows, cols, limits, cache, ahead)
+            send = (self.proc.stdin, mode, todo, rows, cols, limits, cache, ahead, semantics)
             writer = None
             if len(todo) <= CHUNK and sum(map(len, todo)) + 4096 < self.room:
                 self._send(*send)  # one chunk that fits in the empty pipe: the write cannot block

@@ -8,6 +8,11 @@ from dataclasses import dataclass, field
 
 from sartco.world import ErrorCode
 
+# how a program's names are bound (namespaces.py): MODULE, a script's module namespace (our
+# protocol); PAPER, the authors' exec(code) inside a function of their scorer (the paper protocol)
+MODULE, PAPER = "module", "paper"
+SEMANTICS = (MODULE, PAPER)
+
 
 @dataclass(frozen=True, slots=True)
 class Limits:

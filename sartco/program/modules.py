@@ -30,6 +30,7 @@ import typing
 from . import budget, formatting
 from .budget import Forbidden, too_big, too_long
 from .conversions import INT
+from .json_module import MEMBERS as JSON_MEMBERS
 
 
 class Module:
@@ -171,6 +172,7 @@ _FACTORIES = {
                       "float32": float, "pi": math.pi, "e": math.e, "sqrt": math.sqrt, "floor": math.floor,
                       "ceil": math.ceil, "abs": abs},
 }
+_FACTORIES["json"] = lambda: dict(JSON_MEMBERS)  # json_module.py
 _MEMBERS_CACHE = {name: make() for name, make in _FACTORIES.items()}
 MEMBERS = {name: frozenset(members) for name, members in _MEMBERS_CACHE.items()}  # for allowed.py and nodes.py
 

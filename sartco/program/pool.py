@@ -23,7 +23,7 @@ import threading
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, Board, ErrorCode, WorldError
 
 from .driver import Worker, failed
-from .execution import Execution, Limits, not_a_str
+from .execution import MODULE, SEMANTICS, Execution, Limits, not_a_str
 
 E = ErrorCode
 BATCH = 32  # a call with fewer items than this uses one worker
@@ -71,7 +71,7 @@ def default_workers() -> int:
 
 
 def dispatch(mode: str, items: list[bytes], keys: list | None, rows: int, cols: int, limits: Limits,
-             workers: int | None = None, cache: bool = True) -> list:
+             workers: int | None = None, cache: bool = True, semantics: str = MODULE) -> list:
     """Run items on the workers; answers in input order (see driver.Worker.run). Items with equal
     keys go to the same worker, so its code cache sees every repeat of a source; without keys
     (no cache to serve) the shares are balanced by size, since a program's cost grows with its
@@ -91,7 +91,8 @@ def dispatch(mode: str, items: list[bytes], keys: list | None, rows: int, cols: 
 
     def drive(worker: Worker, share: list[int]):
         with worker.lock:
-            for i, answer in zip(share, worker.run(mode, [items[i] for i in share], rows, cols, limits, cache)):
+            for i, answer in zip(share, worker.run(mode, [items[i] for i in share], rows, cols, limits, cache,
+                                                          semantics)):
                 results[i] = answer
 
     pool = _get_workers(n)
@@ -107,8 +108,11 @@ def dispatch(mode: str, items: list[bytes], keys: list | None, rows: int, cols: 
 
 
 def execute_many(programs, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, limits: Limits | None = None, *,
-                 workers: int | None = None, cache: bool = True) -> list[Execution]:
-    """Run many programs, each on its own fresh board; results in input order."""
+                 workers: int | None = None, cache: bool = True, semantics: str = MODULE) -> list[Execution]:
+    """Run many programs, each on its own fresh board; results in input order. `semantics`:
+    MODULE (a script's namespace) or PAPER (the authors' exec, see namespaces.py)."""
+    if semantics not in SEMANTICS:
+        raise ValueError(f"unknown semantics {semantics!r}; expected one of {', '.join(SEMANTICS)}")
     try:
         programs = list(programs)
         limits = limits or Limits()
@@ -125,7 +129,7 @@ def execute_many(programs, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, l
                 results[i] = failed(E.TYPE_ERROR, not_a_str(p))
         items = [json.dumps(programs[i]).encode() for i in todo]
         keys = [programs[i] for i in todo] if cache else None
-        answers = dispatch("code", items, keys, rows, cols, limits, workers, cache)
+        answers = dispatch("code", items, keys, rows, cols, limits, workers, cache, semantics)
         for i, answer in zip(todo, answers):
             results[i] = _decode(answer) if type(answer) is bytes else answer
         return [r if r is not None else failed(E.RUNTIME_ERROR, "the sandbox returned no result") for r in results]
@@ -134,6 +138,7 @@ def execute_many(programs, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, l
         return [failed(E.RUNTIME_ERROR, f"sandbox failure: {type(exc).__name__}: {exc}") for _ in range(n)]
 
 
-def execute(code: str, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, limits: Limits | None = None) -> Execution:
+def execute(code: str, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, limits: Limits | None = None, *,
+            semantics: str = MODULE) -> Execution:
     """Run one program on a fresh rows x cols board (see the package docstring)."""
-    return execute_many([code], rows, cols, limits, workers=1)[0]
+    return execute_many([code], rows, cols, limits, workers=1, semantics=semantics)[0]

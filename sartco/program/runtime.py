@@ -1,6 +1,7 @@
 """Run one prepared program on a fresh board, inside the worker process.
 
-The program's globals are `board`, `put`, `init_board`; its `__builtins__` is BUILTINS (no
+The program's globals are `board`, `put`, `init_board`, `__name__` ("__main__"); under PAPER
+semantics namespaces.paper splits them into the authors' globals and locals. Its `__builtins__` is BUILTINS (no
 program can reach the dict, so one serves them all; `$t` is set per program): the allowed
 builtins (some with budgets: `range`, `round`, `sum`, `pow` in budget.py, `int`, `str`, `repr`,
 `ascii` in conversions.py, `format` in formatting.py; `print` does nothing), a refusing
@@ -30,10 +31,10 @@ from operator import length_hint
 
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, Board, ErrorCode, WorldError, put
 
-from . import budget, conversions, formatting
+from . import budget, conversions, formatting, namespaces
 from .allowed import ALLOWED_BUILTINS, DENIED
 from .budget import Forbidden, Limit
-from .execution import clean, not_a_str
+from .execution import MODULE, PAPER, clean, not_a_str
 from .instrument import prepare
 from .methods import CHECKED_METHODS, TYPE_METHODS
 from .modules import Module, import_module
@@ -200,10 +201,11 @@ def _depth() -> int:
     return n
 
 
-def run(compiled: tuple, rows: int, cols: int, limits) -> list:
+def run(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE, source: str = "") -> list:
     """Run one program, given what compile_program made of it; return [ok, code or None,
     message, cells, puts]. The message is clean (execution.clean). A budget stop, a MemoryError or
-    an internal error sets SPOILED: the worker answers, then retires."""
+    an internal error sets SPOILED: the worker answers, then retires. PAPER semantics: separate
+    globals and locals (namespaces.paper), and the board passed in is the one scored."""
     global _STEPS
     code, error, message = compiled
     try:
@@ -221,13 +223,14 @@ def run(compiled: tuple, rows: int, cols: int, limits) -> list:
     budget.LENGTH, budget.INT_BITS, budget.STOPPED = limits.length, limits.int_bits, None
     _STEPS = steps = repeat(True, limits.steps)
     BUILTINS["$t"] = steps.__next__  # no program can reach the dict: one serves them all
-    env = {"__builtins__": BUILTINS, "board": board, "put": put, "init_board": init_board}
+    env = {"__builtins__": BUILTINS, "__name__": "__main__", "board": board, "put": put, "init_board": init_board}
+    env, scope = namespaces.paper(env, source) if semantics == PAPER else (env, env)
     old_limit = sys.getrecursionlimit()
     error = None
     try:
         sys.setrecursionlimit(_depth() + limits.depth + 10)
         try:
-            exec(code, env)
+            exec(code, env, scope)
         finally:
             sys.setrecursionlimit(old_limit)
     except BaseException as exc:  # noqa: BLE001 - everything the program does ends here
@@ -239,10 +242,11 @@ def run(compiled: tuple, rows: int, cols: int, limits) -> list:
         error, message = _verdict(budget.STOPPED, limits)
     budget.STOPPED = None
     try:
-        result_board = env.get("board")
+        result_board = board if semantics == PAPER else env.get("board")
         if type(result_board) is not Board:
             result_board = last[0]
         env.clear()
+        scope.clear()
         cells, puts = result_board.cells(), result_board.puts
         message = clean(message)
     except MemoryError:

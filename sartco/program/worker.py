@@ -112,6 +112,7 @@ def main(parent: int = 0) -> int:
             memory = limits.memory
             _limit(resource.RLIMIT_AS, base + memory)
         rows, cols, cache, mode = request["rows"], request["cols"], request["cache"], request["mode"]
+        semantics = request["semantics"]
 
         def prepare(item: bytes) -> tuple:
             """(the item's input, its compile_program result or None): everything before running."""
@@ -126,7 +127,7 @@ def main(parent: int = 0) -> int:
         def answer(job: tuple) -> str:
             given, compiled = job
             if mode == "code":
-                return encode(run(compiled, rows, cols, limits))
+                return encode(run(compiled, rows, cols, limits, semantics, given))
             return finish(*given, lambda: run(compiled, rows, cols, limits)[:4])
 
         # read the whole batch before answering: its programs are compiled ahead, and the parent

@@ -1,0 +1,57 @@
+"""The paper protocol's namespace: a program runs as the authors' scorer ran it.
+
+The authors called `exec(code)` inside `_execute_instructions(instruction, board)`, a function of
+their scorer module (../shared/sartco-data/paper-protocol/README.md, "How the authors ran a
+program"). `paper(env, source)` turns the module namespace that runtime.run built into the two
+dictionaries of `exec(code, globals, locals)`:
+- globals: the scorer module's names: `put`, `init_board`, `np` (numpy), `json`, `re`, `Counter`,
+  `deepcopy` (each the sandbox's stand-in), `__name__` = MODULE_NAME (not "__main__", so an
+  `if __name__ == "__main__":` block never runs); no `board`;
+- locals: the function's `instruction` (the program text) and `board`.
+So the program's top level sees both; its top-level assignments go to the locals (rebinding
+`board` is lost: runtime.run scores the board object passed in); the functions it defines look
+names up in the globals only (`board`, its own helpers and top-level variables are NameError
+there, `put`, `np`, ... are not). `global x` writes the globals, as in the authors' scorer.
+
+The scorer module's real name is not in the README; any name but "__main__" gives the same
+verdicts. `re` stays refused (a pattern can backtrack in C code beyond every budget): its
+functions are there and each refuses, naming why. The simulator's error classes are not bound
+(their names are not in the README).
+"""
+from __future__ import annotations
+
+import re as _re
+
+from .budget import Forbidden
+from .modules import REFUSED, Module, load
+
+MODULE_NAME = "cocobots_scorer"
+
+
+class _RefusedFunction:
+    """A function of a module the authors' namespace bound but the sandbox cannot offer."""
+
+    __slots__ = ("name",)
+
+    def __init__(self, name: str):
+        self.name = name
+
+    def __call__(self, *args, **kwargs):
+        raise Forbidden(f"{self.name} is not available in the sandbox: {REFUSED[self.name.partition('.')[0]]}")
+
+    def __repr__(self):
+        return f"<{self.name}: not available in the sandbox>"
+
+
+_RE = {name: _RefusedFunction(f"re.{name}") for name in _re.__all__ if name.islower()}
+
+
+def paper(env: dict, source: str) -> tuple[dict, dict]:
+    """(globals, locals) of the authors' exec, from runtime.run's module namespace `env`
+    (which loses `board`: it moves to the locals)."""
+    board = env.pop("board")
+    env.update({
+        "__name__": MODULE_NAME, "np": load("numpy"), "json": load("json"), "re": Module("re", dict(_RE)),
+        "Counter": vars(load("collections"))["Counter"], "deepcopy": vars(load("copy"))["deepcopy"],
+    })
+    return env, {"instruction": source, "board": board}
