@@ -10,6 +10,8 @@ tests: it answers `POST /v1/chat/completions` from the episodes' gold code after
 - `intervals` records (start, end) of every answered request (time.monotonic), from which
   `busy_time` (the union: time with at least one request in flight) follows.
 - `fail_first`: the first n requests get 500 (for the backend's retry test).
+- `hang`: every request is counted and then never answered until the server stops (a hung
+  model server, for the backend's timeout test); `requests` counts every request that arrived.
 """
 from __future__ import annotations
 
@@ -40,9 +42,10 @@ def answer_table(game_instances) -> dict[str, str]:
 
 class StubServer:
     def __init__(self, answers: dict[str, str], *, latency: float = 0.5, max_requests: int = 10_000,
-                 max_seconds: float = 1800.0, fail_first: int = 0):
+                 max_seconds: float = 1800.0, fail_first: int = 0, hang: bool = False):
         self.answers, self.latency = answers, latency
         self.max_requests, self.max_seconds, self.fail_first = max_requests, max_seconds, fail_first
+        self.hang = hang
         self.requests = 0
         self.intervals: list[tuple[float, float]] = []
         self.unknown = 0      # conversations without a gold answer
@@ -93,6 +96,9 @@ class StubServer:
         if number > self.max_requests or self._stopped.is_set():
             self.stop()
             return 503, {"error": {"message": "stub server: request budget or time used up"}}
+        if self.hang:
+            self._stopped.wait(self.max_seconds)
+            return 503, {"error": {"message": "stub server: stopped while hanging"}}
         if number <= self.fail_first:
             return 500, {"error": {"message": "stub server: a planned failure"}}
         start = time.monotonic()

@@ -31,7 +31,7 @@ from sartco.episode import (ATTEMPTS, CELL_F1, CODEBLEU, ERROR_CATEGORY, ES_AT_1
                             MAX_ATTEMPTS)
 from sartco.world import ErrorCode
 
-from . import dialogue_table, paper_table
+from . import dialogue_table, intervals, paper_table, passk
 from .files import load_json, markdown_table, number, percent, write_csv
 
 # clemgame entries whose cells are rows of another game's Table 3 (the published human- and
@@ -57,6 +57,8 @@ def collect(results: Path, games: list[str] | None = None) -> list[dict]:
     experiments: dict[Path, dict | None] = {}
     episodes = []
     for path in sorted(results.rglob("scores.json")):
+        if path.relative_to(results).parts[0] == passk.SAMPLES:  # `sartco sample`'s runs: passk.md
+            continue
         episode_dir = path.parent
         exp_dir = episode_dir.parent
         if exp_dir not in experiments:
@@ -72,7 +74,7 @@ def collect(results: Path, games: list[str] | None = None) -> list[dict]:
         scores = data.get("episode scores", {})
         attempts = int(scores.get(MAX_ATTEMPTS, 1))  # logged by the scorer of a feedback experiment
         episodes.append({
-            "game": game, "model": exp_dir.parent.parent.name, "experiment": exp["name"],
+            "game": game, "model": exp_dir.parent.parent.name, "experiment": exp["name"], "episode": episode_dir.name,
             "board_type": exp["board_type"], "object_type": exp["object_type"], "task": exp["task"],
             "source": exp.get("source", ""), "split": exp.get("split", ""), "ablation": exp.get("ablation"),
             "aborted": int(scores.get("Aborted", 0) or 0),
@@ -92,7 +94,8 @@ def collect(results: Path, games: list[str] | None = None) -> list[dict]:
 def _summarise(group: list[dict]) -> dict:
     return {"episodes": len(group), "played": percent([1.0 - e["aborted"] for e in group]),
             "em": percent([e["em"] for e in group]), "cb": percent([e["cb"] for e in group]),
-            "es": percent([e["es"] for e in group]), "f1": percent([e["f1"] for e in group])}
+            "es": percent([e["es"] for e in group]), "f1": percent([e["f1"] for e in group]),
+            **intervals.bounds(group)}  # 95 % bootstrap intervals: <rate>_lo, <rate>_hi
 
 
 def _order(key: tuple) -> tuple:
@@ -119,8 +122,8 @@ def table3(episodes: list[dict]) -> tuple[list[str], list[dict]]:
         game, board, obj, task, source, split, model = key
         rows.append({"game": game, "board_type": board, "object_type": obj, "task": task, "source": source,
                      "split": split, "model": model, **_summarise(groups[key])})
-    return ["game", "board_type", "object_type", "task", "source", "split", "model", "episodes", "played",
-            "em", "cb", "es", "f1"], rows
+    return intervals.columns(["game", "board_type", "object_type", "task", "source", "split", "model", "episodes",
+                              "played", "em", "cb", "es", "f1"]), rows
 
 
 def ablations(episodes: list[dict]) -> tuple[list[str], list[dict]]:
@@ -139,8 +142,8 @@ def ablations(episodes: list[dict]) -> tuple[list[str], list[dict]]:
         game, board, obj, task, source, kind, value, model = key
         rows.append({"game": game, "board_type": board, "object_type": obj, "task": task, "source": source,
                      "ablation": kind, "value": value, "model": model, **_summarise(groups[key])})
-    return ["game", "board_type", "object_type", "task", "source", "ablation", "value", "model", "episodes",
-            "played", "em", "cb", "es", "f1"], rows
+    return intervals.columns(["game", "board_type", "object_type", "task", "source", "ablation", "value", "model",
+                              "episodes", "played", "em", "cb", "es", "f1"]), rows
 
 
 def errors(episodes: list[dict]) -> tuple[list[str], list[dict]]:
@@ -194,16 +197,19 @@ def table3_markdown(rows: list[dict], title: str, keys: list[str]) -> str:
         line = [TASK_NAMES.get(v, v) if k == "task" else v for k, v in zip(keys, key)]
         for m in models:
             r = by_model.get(m)
-            line += [r["em"], r["cb"], r["es"]] if r else ["", "", ""]
+            line += [intervals.shown(r, x) for x in ("em", "cb", "es")] if r else ["", "", ""]
         body.append(line)
     played = {m: [r for r in rows if r["model"] == m] for m in models}
-    note = "; ".join(f"{m}: {sum(r['episodes'] for r in rs)} episodes, "
-                     f"{percent([r['played'] / 100 for r in rs for _ in range(r['episodes'])]):.2f}% played"
-                     for m, rs in played.items())
-    return f"## {title}\n\nEM = exact match, CB = CodeBLEU, ES = execution success (%). {note}.\n\n" + markdown_table(header, body)
+    note = "; ".join(f"{m}: {sum(r['episodes'] for r in rs)} episodes, " + intervals.shown_counts(
+        round(sum(r["played"] * r["episodes"] / 100 for r in rs)), sum(r["episodes"] for r in rs)) + "% played"
+        for m, rs in played.items())
+    return (f"## {title}\n\nEM = exact match, CB = CodeBLEU, ES = execution success (%), each `x [lo, hi]` "
+            f"with its 95 % bootstrap interval. {note}.\n\n" + markdown_table(header, body))
 
 
 def run(args: argparse.Namespace) -> int:
+    if passk.samples_only(args.results):  # nothing but `sartco sample`'s runs
+        return passk.write_alone(args.results, args.out)
     episodes = collect(args.results, args.game)
     out: Path = args.out
     out.mkdir(parents=True, exist_ok=True)
@@ -241,6 +247,7 @@ def run(args: argparse.Namespace) -> int:
         (out / "repair.md").write_text(md, encoding="utf-8")
         written += ["repair.md", "repair.csv"]
     written += dialogue_table.write(episodes, out)  # cobot_describe's dialogue modes
+    written += passk.write(args.results, out)  # pass@k of `sartco sample`'s runs (RESULTS/samples/s1..sN)
     header, rows = errors(episodes)
     write_csv(out / "errors.csv", header, rows)
     md = "# Error categories (episodes per category)\n\n" + markdown_table(header, [[r[h] for h in header] for r in rows])

@@ -2,6 +2,7 @@
 with backoff, the same answers as sequential; and `sartco bench-run` on a small run (the batched
 run's scores.json files equal the sequential run's)."""
 import json
+import time
 from pathlib import Path
 
 import openai
@@ -131,3 +132,42 @@ def test_bench_run_rejects_an_unknown_experiment(tmp_path):
     from sartco.errors import UserError
     with pytest.raises(UserError, match="unknown cobot_instruct experiment"):
         benchrun.select_instances(["no_such_experiment"], 0)
+
+
+def test_a_hung_server_ends_each_request_after_its_timeout_and_retries(tmp_path, monkeypatch, caplog):
+    with StubServer(answers(), hang=True, max_seconds=120) as server:
+        model = model_for(server, tmp_path, monkeypatch, timeout=2, retries=2, retry_budget=600)
+        start = time.monotonic()
+        with pytest.raises(openai.APITimeoutError):
+            model.generate_response([{"role": "user", "content": "Instruction 1."}])
+        took = time.monotonic() - start
+    assert server.requests == 3                  # the first try and two retries, each cut at 2 s
+    assert 6.0 <= took < 20.0, took               # not the client's default 600 s per try
+    assert "APITimeoutError after 3 tries" in caplog.text and "request aborted" in caplog.text
+
+
+def test_the_retry_budget_stops_retrying_early(tmp_path, monkeypatch):
+    with StubServer(answers(), hang=True, max_seconds=120) as server:
+        model = model_for(server, tmp_path, monkeypatch, timeout=2, retries=10, retry_budget=3)
+        start = time.monotonic()
+        with pytest.raises(openai.APITimeoutError):
+            model.generate_response([{"role": "user", "content": "Instruction 1."}])
+    assert server.requests == 2 and time.monotonic() - start < 10   # 2 s + 2 s > the 3 s budget: no third try
+
+
+def test_the_cache_answers_a_repeated_request_without_the_server(tmp_path, monkeypatch):
+    messages = [[{"role": "user", "content": f"Instruction {k}."}] for k in range(4)]
+    with StubServer(answers(), latency=0.0) as server:
+        first = model_for(server, tmp_path, monkeypatch, cache=str(tmp_path / "cache"))
+        texts = [t for _, _, t in first.generate_batch_response(messages)]
+        assert server.requests == 4 and (first.cache.hits, first.cache.misses) == (0, 4)
+        again = model_for(server, tmp_path, monkeypatch, cache=str(tmp_path / "cache"))
+        assert [t for _, _, t in again.generate_batch_response(messages)] == texts
+        assert server.requests == 4 and again.cache.hits == 4          # no request reached the server
+        again.set_gen_args(temperature=0.0, max_tokens=50)              # other settings: another key
+        again.generate_response(messages[0])
+        assert server.requests == 5
+        again.set_gen_args(temperature=0.7, max_tokens=100)             # sampling: never served from the cache
+        again.generate_response(messages[0])
+        again.generate_response(messages[0])
+        assert server.requests == 7
