@@ -85,12 +85,22 @@ def _now() -> str:
     return datetime.now(timezone.utc).isoformat(timespec="seconds")
 
 
+class ProvenanceError(Exception):
+    """A results folder whose runs cannot be merged or checked; one line naming the folder."""
+
+
 def load_run(game_dir: Path) -> dict | None:
     """The run.json of a results/<model>/<game> folder, or None when there is none."""
     path = Path(game_dir) / RUN_FILE
     if not path.is_file():
         return None
-    return json.loads(path.read_text(encoding="utf-8"))
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, ValueError) as exc:
+        raise ProvenanceError(f"{path}: cannot read ({exc})") from None
+    if not isinstance(data, dict) or not isinstance(data.get("instance_file"), dict):
+        raise ProvenanceError(f"{path}: not a SARTCo run.json (no 'instance_file')")
+    return data
 
 
 class RunRecorder:
@@ -114,8 +124,11 @@ class RunRecorder:
             self.path = self.results_dir / Model.to_identifier(player_models) / self.game_name / RUN_FILE
             self.session["models"] = [without_secrets(m.model_spec.to_dict()) for m in player_models]
             self.session["generation"] = without_secrets(dict(player_models[0].gen_args)) if player_models else {}
-            self.previous = load_run(self.path.parent) or {}
-            self.previous_sessions = list(self.previous.get("sessions", []))
+            try:
+                previous = load_run(self.path.parent) or {}
+            except ProvenanceError:  # an unreadable run.json: this session starts a new one
+                previous = {}
+            self.previous_sessions = list(previous.get("sessions", []))
         self.session["episodes_played"] += 1
         if self.session["episodes_played"] == 1:
             self.write()
@@ -140,3 +153,40 @@ class RunRecorder:
         tmp = self.path.with_suffix(".json.tmp")
         tmp.write_text(json.dumps(data, indent=2) + "\n", encoding="utf-8")
         tmp.replace(self.path)
+
+
+def game_entries() -> dict[str, Path]:
+    """game name -> its default instance file, for every entry of the repository's games/*/clemgame.json."""
+    found = {}
+    for spec_file in sorted((REPO / "games").glob("*/clemgame.json")):
+        entries = json.loads(spec_file.read_text(encoding="utf-8"))
+        for entry in entries if isinstance(entries, list) else [entries]:
+            name = entry.get("instances") or "instances"
+            found[entry["game_name"]] = spec_file.parent / "in" / (name if name.endswith(".json") else f"{name}.json")
+    return found
+
+
+def played_instance_file(game_dir: Path, run: dict | None = None) -> tuple[Path, dict | None]:
+    """(the instance file a results/<model>/<game> folder was played from, its run.json or None):
+    run.json's when there is one, else the game entry's default. Raises ProvenanceError when the
+    sessions of run.json name different instance files (hashes) or the file changed since."""
+    game_dir = Path(game_dir)
+    run = run if run is not None else load_run(game_dir)
+    if run is None:
+        entries = game_entries()
+        if game_dir.name not in entries:
+            raise ProvenanceError(f"{game_dir}: no run.json and no game entry '{game_dir.name}' in games/*/clemgame.json")
+        return entries[game_dir.name], None
+    files = {(s["instance_file"]["path"], s["instance_file"]["sha256"]) for s in run.get("sessions", [])}
+    if len({sha for _, sha in files}) > 1:
+        listing = ", ".join(f"{path} sha256 {sha[:12]}" for path, sha in sorted(files))
+        raise ProvenanceError(f"{game_dir}: refusing to merge runs played from different instance files ({listing})")
+    recorded = run["instance_file"]
+    path = Path(recorded["path"])
+    path = path if path.is_absolute() else REPO / path
+    if not path.is_file():
+        raise ProvenanceError(f"{game_dir}: its instance file {recorded['path']} (run.json) no longer exists")
+    if sha256_of(path) != recorded["sha256"]:
+        raise ProvenanceError(f"{game_dir}: instance file {recorded['path']} changed since the run "
+                              f"(sha256 {recorded['sha256'][:12]} in run.json, now {sha256_of(path)[:12]})")
+    return path, run
