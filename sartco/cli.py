@@ -17,6 +17,7 @@ COMMANDS = {
     "import": ("sartco.published.importer", "convert the published SARTCo files into the dataset format"),
     "import-instructions": ("sartco.instances.describer_import", "turn describer results into a dataset"),
     "report": ("sartco.report.tables", "paper-style tables from a clemcore results folder"),
+    "resume": ("sartco.clem.resume", "play and score exactly the missing episodes of an interrupted clem run"),
     "export-prompts": ("sartco.protocols.export", "the prompts of a protocol's episodes (paper or sartco) as JSON lines"),
     "score-responses": ("sartco.protocols.score", "score raw answers (JSON lines) in a protocol (paper or sartco)"),
     "bench-run": ("sartco.clem.benchrun", "clem run against a stub model server: sequential vs the batching backend"),

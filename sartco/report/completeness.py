@@ -2,13 +2,7 @@
 episodes of the instance file it was played from (sartco.clem.provenance.played_instance_file:
 run.json's, else the game entry's default file).
 
-An episode of the instance file is one of
-  missing     no episode folder, or no interactions.json in it (never played, or the run stopped)
-  errored     error.json without completed.json: clemcore caught an exception (e.g. the model
-              server failed) and went on; a harness fault, not the model's error
-  unscored    interactions.json without scores.json (`clem score` not run on it)
-  unreadable  interactions.json or scores.json is not valid JSON
-  scored      everything else.
+What counts as missing, errored, unscored or unreadable: sartco.clem.completeness.
 The experiments checked: with run.json those its sessions played (all of the file when one of
 them had no -e), without it those with a folder. `sartco report` writes completeness.md / .csv,
 marks each incomplete cell with INCOMPLETE_MARK and exits with INCOMPLETE_STATUS; `sartco resume`
@@ -16,20 +10,18 @@ plays the missing and errored episodes again and scores the unscored ones.
 """
 from __future__ import annotations
 
-import json
 import sys
 from collections import Counter
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from sartco.clem.provenance import ProvenanceError, load_run, played_instance_file
+from sartco.clem.completeness import INCOMPLETE_STATUS, PROBLEMS, check_game
+from sartco.clem.provenance import ProvenanceError
 from sartco.errors import UserError
 
 from .files import markdown_table, write_csv
 
-INCOMPLETE_STATUS = 3  # exit status of `sartco report` when an episode is missing, unscored or unreadable
 INCOMPLETE_MARK = "†"
-PROBLEMS = ("missing", "errored", "unscored", "unreadable")
 
 
 @dataclass
@@ -55,54 +47,6 @@ def cell(episodes: list[dict]) -> dict:
     unchecked = sum(1 for e in episodes if not e.get("experiment_counts"))
     return {"episodes_expected": unchecked + sum(n for n, _ in counts.values()),
             "episodes_scored": unchecked + sum(k for _, k in counts.values())}
-
-
-def _readable(path: Path) -> bool:
-    try:
-        json.loads(path.read_text(encoding="utf-8"))
-        return True
-    except (OSError, ValueError):
-        return False
-
-
-def episode_state(folder: Path) -> str:
-    """One of PROBLEMS or "scored" for an episode folder (see the module doc)."""
-    interactions, scores = folder / "interactions.json", folder / "scores.json"
-    if not interactions.is_file():
-        return "missing"
-    if (folder / "error.json").is_file() and not (folder / "completed.json").is_file():
-        return "errored"
-    if not _readable(interactions):
-        return "unreadable"
-    if not scores.is_file():
-        return "unscored"
-    return "scored" if _readable(scores) else "unreadable"
-
-
-def check_game(game_dir: Path) -> tuple[dict[str, int], list[dict], dict | None]:
-    """(experiment -> expected episodes, problems, run.json or None) of results/<model>/<game>."""
-    instance_path, run = played_instance_file(game_dir)
-    try:
-        data = json.loads(instance_path.read_text(encoding="utf-8"))
-    except (OSError, ValueError) as exc:
-        raise ProvenanceError(f"{game_dir}: cannot read its instance file {instance_path} ({exc})") from None
-    if run is not None and all(s.get("experiment") for s in run.get("sessions", [])):
-        chosen = {s["experiment"] for s in run["sessions"]}
-    else:
-        chosen = None if run is not None else {p.name for p in game_dir.iterdir() if p.is_dir()}
-    expected, problems = {}, []
-    model, game = game_dir.parent.name, game_dir.name
-    for experiment in data.get("experiments", []):
-        name = experiment["name"]
-        if chosen is not None and name not in chosen:
-            continue
-        expected[name] = len(experiment["game_instances"])
-        for instance in experiment["game_instances"]:
-            state = episode_state(game_dir / name / f"instance_{instance['game_id']:05d}")
-            if state != "scored":
-                problems.append({"model": model, "game": game, "experiment": name,
-                                 "game_id": instance["game_id"], "problem": state})
-    return expected, problems, run
 
 
 def check(results: Path, games: list[str] | None, game_names: set[str]) -> Completeness:
