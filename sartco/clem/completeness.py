@@ -10,7 +10,9 @@ An episode of the instance file is one of
   unreadable  interactions.json or scores.json is not valid JSON
   scored      everything else.
 The experiments checked: with run.json those its sessions played (all of the file when one of
-them had no -e), without it those with a folder.
+them had no -e). A folder without run.json (played before run.json existed, or in-process by
+tests) is checked against its game's default instance file only when every episode it holds is
+an episode of that file (its instance.json); else it is "unverifiable" (listed, not an error).
 """
 from __future__ import annotations
 
@@ -45,13 +47,34 @@ def episode_state(folder: Path) -> str:
     return "scored" if readable(scores) else "unreadable"
 
 
+class Unverifiable(Exception):
+    """A folder without run.json that was not played from its game's default instance file (or that
+    file is gone): which episodes it should hold is unknown; the message says why."""
+
+
+def _played_from(game_dir: Path, data: dict, instance_path: Path) -> None:
+    """Without run.json: raise Unverifiable unless every episode in the folder is, field for
+    field (its instance.json), an episode of the default instance file under the same experiment."""
+    episodes = {(e["name"], i["game_id"]): i for e in data.get("experiments", []) for i in e["game_instances"]}
+    for path in sorted(Path(game_dir).glob("*/instance_*/instance.json")):
+        key = (path.parent.parent.name, int(path.parent.name.split("_")[-1]))
+        if not readable(path) or episodes.get(key) != json.loads(path.read_text(encoding="utf-8")):
+            raise Unverifiable(f"{game_dir}: no run.json, and {key[0]}/{path.parent.name} is not an episode of "
+                               f"{instance_path.name} (played from another instance file)")
+
+
 def check_game(game_dir: Path) -> tuple[dict[str, int], list[dict], dict | None]:
-    """(experiment -> expected episodes, problems, run.json or None) of results/<model>/<game>."""
+    """(experiment -> expected episodes, problems, run.json or None) of results/<model>/<game>.
+    Raises ProvenanceError (see played_instance_file) and Unverifiable."""
     instance_path, run = played_instance_file(game_dir)
     try:
         data = json.loads(instance_path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise Unverifiable(f"{game_dir}: no run.json, and the default instance file {instance_path} does not exist") from None
     except (OSError, ValueError) as exc:
         raise ProvenanceError(f"{game_dir}: cannot read its instance file {instance_path} ({exc})") from None
+    if run is None:
+        _played_from(game_dir, data, instance_path)
     if run is not None and all(s.get("experiment") for s in run.get("sessions", [])):
         chosen = {s["experiment"] for s in run["sessions"]}
     else:

@@ -23,7 +23,7 @@ from pathlib import Path
 from sartco.errors import UserError
 
 from . import provenance
-from .completeness import INCOMPLETE_STATUS, check_game, episode_folder, needs_play
+from .completeness import INCOMPLETE_STATUS, Unverifiable, check_game, episode_folder, needs_play
 
 
 def configure(parser: argparse.ArgumentParser) -> None:
@@ -50,7 +50,7 @@ def run_folder(models: list[str]) -> str:
 def _problems(game_dir: Path):
     try:
         expected, problems, run = check_game(game_dir)
-    except provenance.ProvenanceError as exc:
+    except (provenance.ProvenanceError, Unverifiable) as exc:
         raise UserError(str(exc)) from None
     return sum(expected.values()), problems, run
 

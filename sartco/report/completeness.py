@@ -15,7 +15,7 @@ from collections import Counter
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from sartco.clem.completeness import INCOMPLETE_STATUS, PROBLEMS, check_game
+from sartco.clem.completeness import INCOMPLETE_STATUS, PROBLEMS, Unverifiable, check_game
 from sartco.clem.provenance import ProvenanceError
 from sartco.errors import UserError
 
@@ -29,6 +29,7 @@ class Completeness:
     expected: dict[tuple, int] = field(default_factory=dict)   # (model, game, experiment) -> episodes
     problems: list[dict] = field(default_factory=list)         # model, game, experiment, game_id, problem
     runs: dict[tuple, dict] = field(default_factory=dict)      # (model, game) -> run.json
+    unverifiable: list[str] = field(default_factory=list)      # folders whose instance file is unknown
 
     def scored(self, key: tuple) -> int:
         return self.expected[key] - sum(1 for p in self.problems if (p["model"], p["game"], p["experiment"]) == key)
@@ -61,6 +62,9 @@ def check(results: Path, games: list[str] | None, game_names: set[str]) -> Compl
             expected, problems, run = check_game(game_dir)
         except ProvenanceError as exc:
             raise UserError(str(exc)) from None
+        except Unverifiable as exc:
+            out.unverifiable.append(str(exc))
+            continue
         model, game = game_dir.parent.name, game_dir.name
         out.expected.update({(model, game, x): n for x, n in expected.items()})
         out.problems += problems
@@ -103,6 +107,9 @@ def write(result: Completeness, out: Path) -> list[str]:
            f"`sartco resume` plays the missing and errored episodes, `clem score` scores the unscored.\n\n"
            if incomplete else f"All {len(rows)} experiments complete.\n\n")
     md += markdown_table(header, [[r[h] for h in header] for r in incomplete or rows])
+    if result.unverifiable:
+        md += "\nNot checked (which episodes they should hold is unknown):\n\n" + "".join(
+            f"- {note}\n" for note in result.unverifiable)
     md += runs_markdown(result.runs)
     (out / "completeness.md").write_text(md, encoding="utf-8")
     return ["completeness.md", "completeness.csv"]
@@ -116,6 +123,8 @@ def finish(result: Completeness, out: Path, written: list[str]) -> int:
         print(f"  run {model} / {game}: {run['instance_file']['path']} sha256 {run['instance_file']['sha256'][:12]}, "
               f"sartco {run.get('sartco_version')} {(run.get('git_commit') or 'no git')[:12]}, clemcore "
               f"{run.get('clemcore_version')}, {generation}, {run.get('start')} .. {run.get('end')}")
+    for note in result.unverifiable:
+        print(f"  not checked: {note}")
     incomplete = [k for k in sorted(result.expected) if result.scored(k) < result.expected[k]]
     if not incomplete:
         return 0
