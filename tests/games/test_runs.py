@@ -108,3 +108,23 @@ def test_run_json_keeps_no_secret():
              "model_config": {"base_url": "http://x", "Authorization": "Bearer y", "headers": [{"x-api-token": "z"}]}}
     assert without_secrets(entry) == {"model_name": "m", "backend": "openai_compatible",
                                       "model_config": {"base_url": "http://x", "headers": [{}]}}
+
+
+def test_cobot_describe_is_the_one_shot_game_alone():
+    """One meaning per leaderboard column: `clem run -g cobot_describe` plays the paper's one-shot
+    mode only; the dialogue modes are the entry cobot_describe_dialogue; episode ids are unique
+    over both (the generator numbers them as one file would)."""
+    from clemcore.clemgame import GameRegistry
+
+    registry = GameRegistry.from_directories_and_cwd_files()
+    files = {}
+    for game in ("cobot_describe", "cobot_describe_dialogue"):
+        [spec] = [s for s in registry.get_game_specs_that_unify_with(game) if s.game_name == game]
+        data = json.loads((Path(spec.game_path) / "in" / f"{spec.instances}.json").read_text())
+        files[game] = data["experiments"]
+    assert {e.get("mode", "oneshot") for e in files["cobot_describe"]} == {"oneshot"}
+    assert [e["name"] for e in files["cobot_describe"]] == \
+        ["simple_boards", "regular_boards_simple_objects", "regular_boards_complex_objects"]
+    assert {e.get("mode") for e in files["cobot_describe_dialogue"]} == {"clarify", "correct", "clarify_correct"}
+    ids = [i["game_id"] for experiments in files.values() for e in experiments for i in e["game_instances"]]
+    assert len(ids) == len(set(ids)) == 1560
