@@ -83,19 +83,23 @@ def test_stopped_run_is_reported_incomplete_and_resume_completes_it(tmp_path, un
 @pytest.mark.slow
 def test_runs_of_different_instance_files_are_refused(tmp_path, uninterrupted):
     results = tmp_path / "results"
-    shutil.copytree(uninterrupted.parent, results / "mock")
+    shutil.copytree(uninterrupted.parent, results / "mock")  # played from instances_smoke
+    # one more experiment into the same folder, from the game's default file (130 episodes)
+    sh(str(BIN / "clem"), "run", "-g", GAME, "-m", "mock", "-e", "rb_co_repetition_template", "-r", str(results))
     path = results / "mock" / GAME / "run.json"
     run = json.loads(path.read_text())
-    other = dict(run["sessions"][0], instance_file={"path": "games/cobot_instruct/in/instances.json",
-                                                  "name": "instances", "sha256": "0" * 64})
-    path.write_text(json.dumps(dict(run, sessions=run["sessions"] + [other])))
+    assert [s["instance_file"]["name"] for s in run["sessions"]] == ["instances_smoke", "instances"]
     report = sartco("report", "-r", results, "--out", tmp_path / "scores")
     assert report.returncode == 2
     assert "refusing to merge runs played from different instance files" in report.stderr
+    assert "games/cobot_instruct/in/instances.json" in report.stderr and "instances_smoke.json" in report.stderr
     assert len(report.stderr.strip().splitlines()) == 1
+    resume = sartco("resume", "-r", results, "-g", GAME, "-m", "mock")
+    assert resume.returncode == 2 and "refusing to merge" in resume.stderr
 
     # the instance file changed since the first run: neither report nor resume go on
-    path.write_text(json.dumps(dict(run, instance_file=dict(run["instance_file"], sha256="f" * 64))))
+    first = json.loads((uninterrupted / "run.json").read_text())
+    path.write_text(json.dumps(dict(first, instance_file=dict(first["instance_file"], sha256="f" * 64))))
     for done in (sartco("report", "-r", results, "--out", tmp_path / "scores"),
                  sartco("resume", "-r", results, "-g", GAME, "-m", "mock")):
         assert done.returncode == 2
