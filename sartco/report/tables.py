@@ -31,7 +31,7 @@ from sartco.episode import (ATTEMPTS, CELL_F1, CODEBLEU, ERROR_CATEGORY, ES_AT_1
                             MAX_ATTEMPTS)
 from sartco.world import ErrorCode
 
-from . import dialogue_table, intervals, paper_table, passk
+from . import completeness, dialogue_table, intervals, paper_table, passk
 from .files import load_json, markdown_table, number, percent, write_csv
 
 # clemgame entries whose cells are rows of another game's Table 3 (the published human- and
@@ -70,7 +70,10 @@ def collect(results: Path, games: list[str] | None = None) -> list[dict]:
         game = exp.get("game_name") or exp_dir.parent.name
         if games and game not in games:
             continue
-        data = load_json(path)
+        try:
+            data = load_json(path)
+        except UserError:
+            continue  # listed as unreadable by sartco.report.completeness
         scores = data.get("episode scores", {})
         attempts = int(scores.get(MAX_ATTEMPTS, 1))  # logged by the scorer of a feedback experiment
         episodes.append({
@@ -95,7 +98,7 @@ def _summarise(group: list[dict]) -> dict:
     return {"episodes": len(group), "played": percent([1.0 - e["aborted"] for e in group]),
             "em": percent([e["em"] for e in group]), "cb": percent([e["cb"] for e in group]),
             "es": percent([e["es"] for e in group]), "f1": percent([e["f1"] for e in group]),
-            **intervals.bounds(group)}  # 95 % bootstrap intervals: <rate>_lo, <rate>_hi
+            **intervals.bounds(group), **completeness.cell(group)}  # 95 % bootstrap intervals: <rate>_lo, <rate>_hi
 
 
 def _order(key: tuple) -> tuple:
@@ -123,7 +126,7 @@ def table3(episodes: list[dict]) -> tuple[list[str], list[dict]]:
         rows.append({"game": game, "board_type": board, "object_type": obj, "task": task, "source": source,
                      "split": split, "model": model, **_summarise(groups[key])})
     return intervals.columns(["game", "board_type", "object_type", "task", "source", "split", "model", "episodes",
-                              "played", "em", "cb", "es", "f1"]), rows
+                              "episodes_expected", "episodes_scored", "played", "em", "cb", "es", "f1"]), rows
 
 
 def ablations(episodes: list[dict]) -> tuple[list[str], list[dict]]:
@@ -143,7 +146,8 @@ def ablations(episodes: list[dict]) -> tuple[list[str], list[dict]]:
         rows.append({"game": game, "board_type": board, "object_type": obj, "task": task, "source": source,
                      "ablation": kind, "value": value, "model": model, **_summarise(groups[key])})
     return intervals.columns(["game", "board_type", "object_type", "task", "source", "ablation", "value", "model",
-                              "episodes", "played", "em", "cb", "es", "f1"]), rows
+                              "episodes", "episodes_expected", "episodes_scored", "played", "em", "cb", "es",
+                              "f1"]), rows
 
 
 def errors(episodes: list[dict]) -> tuple[list[str], list[dict]]:
@@ -197,7 +201,7 @@ def table3_markdown(rows: list[dict], title: str, keys: list[str]) -> str:
         line = [TASK_NAMES.get(v, v) if k == "task" else v for k, v in zip(keys, key)]
         for m in models:
             r = by_model.get(m)
-            line += [intervals.shown(r, x) for x in ("em", "cb", "es")] if r else ["", "", ""]
+            line += [completeness.mark(intervals.shown(r, x), r) for x in ("em", "cb", "es")] if r else ["", "", ""]
         body.append(line)
     played = {m: [r for r in rows if r["model"] == m] for m in models}
     note = "; ".join(f"{m}: {sum(r['episodes'] for r in rs)} episodes, " + intervals.shown_counts(
@@ -211,6 +215,8 @@ def run(args: argparse.Namespace) -> int:
     if passk.samples_only(args.results):  # nothing but `sartco sample`'s runs
         return passk.write_alone(args.results, args.out)
     episodes = collect(args.results, args.game)
+    found = completeness.check(args.results, args.game, {e["game"] for e in episodes})
+    found.annotate(episodes)
     out: Path = args.out
     out.mkdir(parents=True, exist_ok=True)
     written = []
@@ -255,5 +261,6 @@ def run(args: argparse.Namespace) -> int:
     written += ["errors.md", "errors.csv"]
     if paper_md:
         print(paper_md)
+    written += completeness.write(found, out)
     print(f"sartco report: {len(episodes)} episodes -> " + ", ".join(str(out / w) for w in written))
-    return 0
+    return completeness.finish(found, out, written)

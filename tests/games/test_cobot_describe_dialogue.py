@@ -18,10 +18,15 @@ from sartco.follower import emit
 from sartco.follower.correct import pieces
 from sartco.world import COLORS
 
-SLICE = REPO / "games" / "cobot_describe" / "in" / "instances_slice.json"
-FULL = REPO / "games" / "cobot_describe" / "in" / "instances.json"
+IN = REPO / "games" / "cobot_describe" / "in"
+SLICES = [IN / "instances_slice.json", IN / "instances_dialogue_slice.json"]  # cobot_describe, _dialogue
+FULL = [IN / "instances.json", IN / "instances_dialogue.json"]
 MODES = ("oneshot", "clarify", "correct", "clarify_correct")
 HOSTILE = "import os\nos.system('touch /tmp/sartco_dialogue_pwned')"
+
+
+def experiments_of(paths: list[Path]) -> list[dict]:
+    return [e for path in paths for e in json.loads(path.read_text())["experiments"]]
 
 
 def wrong_code(target: dict) -> str:
@@ -66,9 +71,9 @@ def scenarios(base: dict) -> dict:
 
 
 def scripted_instances() -> dict:
-    data = json.loads(SLICE.read_text())
+    data = {"experiments": experiments_of(SLICES)}
     used = {i["board_id"] for e in data["experiments"] for i in e["game_instances"]}
-    full = json.loads(FULL.read_text())["experiments"]
+    full = experiments_of(FULL)
     base = next(i for i in full[0]["game_instances"] if i["board_id"] not in used)  # a simple board
     by_mode = {e.get("mode", "oneshot"): e for e in full if e["board_type"] == "simple"}
     experiments = {}
@@ -125,7 +130,7 @@ def answers(episode, player: str) -> list[str]:
 
 
 def test_mock_plays_every_mode_and_wins(run):
-    experiments = json.loads(SLICE.read_text())["experiments"]
+    experiments = experiments_of(SLICES)
     assert sorted({e.get("mode", "oneshot") for e in experiments}) == sorted(MODES)
     assert len(experiments) == 12
     for experiment in experiments:
