@@ -140,6 +140,32 @@ def array(obj, dtype=None):
     return obj if dtype is None else dtype(obj)
 
 
+def shallow_copy(x, *more, **named):
+    """copy.copy with the safe signature (a board's copy is an independent board: world/board.py)."""
+    if more or named:
+        raise TypeError(f"copy() takes exactly one argument ({1 + len(more) + len(named)} given)")
+    return copy.copy(x)
+
+
+def deep_copy(x, *more, **named):
+    """copy.deepcopy without its memo: the objects a copy passes through never reach a program."""
+    if more or named:
+        raise Forbidden("copy.deepcopy takes one argument in the sandbox: its memo would hand out the "
+                        "internals of the objects copied (the board's storage among them)")
+    return copy.deepcopy(x)
+
+
+shallow_copy.__name__ = shallow_copy.__qualname__ = "copy"
+deep_copy.__name__ = deep_copy.__qualname__ = "deepcopy"
+
+
+def forget_typing() -> None:
+    """Empty typing's caches, which are shared by every program of a worker (Literal[x], List[x],
+    ... keep their arguments): runtime calls it before each program."""
+    for clear in typing._cleanups:
+        clear()
+
+
 _TYPING = ("Any", "Callable", "Dict", "FrozenSet", "Iterable", "Iterator", "List", "Literal", "Mapping",
            "Optional", "Sequence", "Set", "Tuple", "Union", "TypeVar", "Generator", "Deque", "DefaultDict")
 _MATH = ("pi", "e", "tau", "inf", "nan", "sqrt", "isqrt", "floor", "ceil", "trunc", "fabs", "gcd", "log",
@@ -162,7 +188,7 @@ _FACTORIES = {
     "typing": lambda: {n: getattr(typing, n) for n in _TYPING},
     "collections": lambda: {"defaultdict": collections.defaultdict, "Counter": collections.Counter,
                             "deque": collections.deque, "OrderedDict": collections.OrderedDict},
-    "copy": lambda: {"copy": copy.copy, "deepcopy": copy.deepcopy},
+    "copy": lambda: {"copy": shallow_copy, "deepcopy": deep_copy},
     "operator": lambda: {**{n: getattr(operator, n) for n in _OPERATOR}, "add": budget.add, "mul": budget.mul,
                          "pow": budget.power, "mod": formatting.mod, "lshift": budget.lshift},
     "string": lambda: {n: getattr(string, n) for n in _STRING},

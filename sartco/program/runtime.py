@@ -36,7 +36,8 @@ from .budget import Forbidden, Limit
 from .execution import clean, not_a_str
 from .instrument import prepare
 from .methods import CHECKED_METHODS, TYPE_METHODS
-from .modules import Module, import_module
+from .modules import Module, forget_typing, import_module
+from .result import board_result
 
 E = ErrorCode
 MESSAGE_CHARS = 400
@@ -222,6 +223,7 @@ def run(compiled: tuple, rows: int, cols: int, limits) -> list:
     _STEPS = steps = repeat(True, limits.steps)
     BUILTINS["$t"] = steps.__next__  # no program can reach the dict: one serves them all
     env = {"__builtins__": BUILTINS, "board": board, "put": put, "init_board": init_board}
+    forget_typing()  # typing's caches start empty: nothing of an earlier program is in them
     old_limit = sys.getrecursionlimit()
     error = None
     try:
@@ -243,7 +245,9 @@ def run(compiled: tuple, rows: int, cols: int, limits) -> list:
         if type(result_board) is not Board:
             result_board = last[0]
         env.clear()
-        cells, puts = result_board.cells(), result_board.puts
+        cells, puts, forged = board_result(result_board)  # only what put placed leaves the worker
+        if forged is not None:
+            error, message = E.FORBIDDEN, forged
         message = clean(message)
     except MemoryError:
         error, message, cells, puts = E.RESOURCE_LIMIT, "the sandbox ran out of memory while reading the board", {}, 0
