@@ -8,7 +8,11 @@ module is refused, naming why: `os`, `sys`, `subprocess`, `importlib`, `builtins
 `pickle`, `io`, `socket`, ... reach the interpreter, the file system or the network; `random`
 would make the board a matter of chance; `re` can backtrack in C code for longer than any
 budget sees; `collections.namedtuple`, `typing.get_type_hints` and `string.Formatter` run text
-as code or read attributes by name, so they are not members. `MEMBERS` (names only)
+as code or read attributes by name, so they are not members; `operator.attrgetter` and
+`methodcaller` read names under the attribute rule of `x.name` (named.py). `copy.copy` and
+`copy.deepcopy` take one argument (the memo would hand out the internals of what they copy;
+a board's copy is an independent board), and typing's caches, shared by a worker's programs,
+are emptied before each program (forget_typing). `MEMBERS` (names only)
 lets instrument.py refuse an unknown module or member before anything runs.
 
 numpy is a stand-in for what honest code of this task does with it: `np.ndarray` (and the
@@ -27,7 +31,7 @@ import operator
 import string
 import typing
 
-from . import budget, formatting
+from . import budget, formatting, named
 from .budget import Forbidden, too_big, too_long
 from .conversions import INT
 
@@ -190,7 +194,8 @@ _FACTORIES = {
                             "deque": collections.deque, "OrderedDict": collections.OrderedDict},
     "copy": lambda: {"copy": shallow_copy, "deepcopy": deep_copy},
     "operator": lambda: {**{n: getattr(operator, n) for n in _OPERATOR}, "add": budget.add, "mul": budget.mul,
-                         "pow": budget.power, "mod": formatting.mod, "lshift": budget.lshift},
+                         "pow": budget.power, "mod": formatting.mod, "lshift": budget.lshift,
+                                 "attrgetter": named.attrgetter, "methodcaller": named.methodcaller},
     "string": lambda: {n: getattr(string, n) for n in _STRING},
     "numpy": lambda: {"ndarray": ndarray, "array": array, "zeros": zeros, "ones": ones, "full": full,
                       "arange": arange, "int_": INT, "int32": INT, "int64": INT, "float64": float,

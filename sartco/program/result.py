@@ -11,6 +11,8 @@ before values, so nothing a program stored there runs (a str subclass may answer
 """
 from __future__ import annotations
 
+import gc
+
 from sartco.world import WorldError
 from sartco.world.rules import replay
 
@@ -19,14 +21,22 @@ FORGED = "the board was changed outside put"
 
 def board_result(board) -> tuple[dict, int, str | None]:
     """(cells, puts, problem): what `put` placed on `board`, and None when its storage holds
-    exactly that, else the one-line reason (FORGED ...)."""
+    exactly that, else the one-line reason (FORGED ...). The cyclic collector is off meanwhile:
+    this work makes no cycles, and a collection here would free a cycle the program left behind
+    before the worker's retirement check (worker.py) sees the memory it held."""
+    collecting = gc.isenabled()
+    gc.disable()
     try:
-        fresh = replay(board)
-    except (WorldError, TypeError, ValueError):  # a log that put did not write
-        return {}, 0, f"{FORGED} (its log of puts is not one that put wrote)"
-    if board.puts != fresh.puts or not _same(board.stacks, fresh.stacks):
-        return fresh.cells(), fresh.puts, FORGED
-    return fresh.cells(), fresh.puts, None
+        try:
+            fresh = replay(board)
+        except (WorldError, TypeError, ValueError):  # a log that put did not write
+            return {}, 0, f"{FORGED} (its log of puts is not one that put wrote)"
+        if board.puts != fresh.puts or not _same(board.stacks, fresh.stacks):
+            return fresh.cells(), fresh.puts, FORGED
+        return fresh.cells(), fresh.puts, None
+    finally:
+        if collecting:
+            gc.enable()
 
 
 def _same(stacks, built: list) -> bool:

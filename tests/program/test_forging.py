@@ -255,3 +255,31 @@ def test_typing_caches_keep_nothing_of_an_earlier_program(monkeypatch):
                                         cache=False), 8, 8, L)
     runtime.run(runtime.compile_program("x = 1", L, cache=False), 8, 8, L)
     assert all(clear.__self__.cache_info().currsize == 0 for clear in typing._cleanups)
+
+
+# --- attribute names given as strings ----------------------------------------------------------
+
+@pytest.mark.parametrize("program", [
+    "import operator\nx = operator.attrgetter('stacks')(board)",
+    "import operator\nx = operator.attrgetter('log', 'puts')(board)",
+    "import operator\nx = operator.attrgetter('__class__')('red')",
+    "import operator\nx = operator.attrgetter('upper.__self__')('red')",
+    "import operator\nx = operator.methodcaller('__reduce_ex__', 4)(board)",
+    "import operator\nx = operator.methodcaller('count', 1)(board)",
+    "from operator import methodcaller\nx = methodcaller('__deepcopy__', {})(board)",
+    "x = getattr(board, 'stacks')",
+    "x = vars(board)",
+    "setattr(board, 'puts', 8)",
+])
+def test_attribute_names_as_strings_follow_the_attribute_rule(program):
+    ex = execute(program)
+    assert (ex.ok, ex.error, ex.cells) == (False, E.FORBIDDEN, {}), ex
+
+
+def test_attrgetter_and_methodcaller_read_what_a_program_may_read():
+    program = ("import math, operator\nnames = list(map(operator.methodcaller('lower'), ['RED', 'Blue']))\n"
+               "floor = operator.attrgetter('floor')(math)\nput(board, 'washer', names[0], floor(1.5), 0)\n"
+               "put(board, 'washer', operator.attrgetter('lower')('BLUE')(), 0, 0)")
+    ex = execute(program)
+    assert ex.ok, ex
+    assert ex.cells == {"0:0": [["washer", "blue"]], "1:0": WR}
