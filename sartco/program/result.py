@@ -6,12 +6,14 @@ of the same size, so the cells that leave the worker are built from the world's 
 (exact str shapes and colours, stacks of at most 4 legal pieces, cells inside the board). When
 the board's own storage differs from the replay (a program reached it some way: a leak of the
 storage is a sandbox bug, and this check is the last line), the verdict is `forbidden`, "the
-board was changed outside put", with the cells that put placed. The comparison reads types
-before values, so nothing a program stored there runs (a str subclass may answer any ==).
+board was changed outside put", with the cells that put placed. The comparison is by
+identity, so nothing a program stored there runs (a str subclass may answer any ==).
 """
 from __future__ import annotations
 
 import gc
+from itertools import chain
+from operator import is_
 
 from sartco.world import WorldError
 from sartco.world.rules import replay
@@ -40,14 +42,13 @@ def board_result(board) -> tuple[dict, int, str | None]:
 
 
 def _same(stacks, built: list) -> bool:
-    """`stacks` is a list of lists of (str, str) pieces, equal to `built` (exact types first)."""
-    if type(stacks) is not list or len(stacks) != len(built):
+    """`stacks` is a list of lists holding the very piece objects of `built` (the replay puts
+    the log's own tuples): compared by identity, in C, so nothing a program stored there runs
+    (a str subclass may answer any ==)."""
+    if type(stacks) is not list or len(stacks) != len(built) or set(map(type, stacks)) - _LIST:
         return False
-    for stack, want in zip(stacks, built):
-        if type(stack) is not list or len(stack) != len(want):
-            return False
-        for piece, good in zip(stack, want):
-            if type(piece) is not tuple or len(piece) != 2 or type(piece[0]) is not str \
-                    or type(piece[1]) is not str or piece != good:
-                return False
-    return True
+    return [*map(len, stacks)] == [*map(len, built)] and all(
+        map(is_, chain.from_iterable(stacks), chain.from_iterable(built)))
+
+
+_LIST = {list}

@@ -23,7 +23,7 @@ def _keys(cols: int) -> tuple[str, ...]:
 class Board:
     """A rows x cols grid of stacks, kept row-major in one flat list (cell (x, y) is
     stacks[x * cols + y]: one list to make per board, not one per row). A bridge is listed in
-    both of its cells. `log` lists the puts that built it, (shape, colour, x, y) in order: the
+    both of its cells. `log` lists the puts that built it, ((shape, colour), x, y) in order: the
     sandbox replays it to prove that nothing but `put` changed the board (program/result.py).
 
     Only `put` changes a board: a copy (copy.copy, copy.deepcopy) is an independent board with
@@ -39,7 +39,7 @@ class Board:
         self.cols = cols
         self.stacks: list[list[tuple[str, str]]] = [[] for _ in range(rows * cols)]
         self.puts = 0
-        self.log: list[tuple[str, str, int, int]] = []
+        self.log: list[tuple[tuple[str, str], int, int]] = []
 
     def __copy__(self) -> "Board":
         twin = Board(self.rows, self.cols)

@@ -86,21 +86,27 @@ def put(board: Board, shape, color, x, y) -> Board:
     """Place one piece, or raise WorldError and leave the board unchanged."""
     if not isinstance(board, Board):
         _fail(E.TYPE_ERROR, f"put: the first argument must be a board, got {type(board).__name__}")
-    second = check(board, shape, color, x, y)
-    piece = (shape, color)
+    _place(board, (shape, color), x, y, check(board, shape, color, x, y))
+    return board
+
+
+def _place(board: Board, piece: tuple, x: int, y: int, second: int | None):
     stacks = board.stacks
     stacks[x * board.cols + y].append(piece)
     if second is not None:
         stacks[second].append(piece)
     board.puts += 1
-    board.log.append((shape, color, x, y))
-    return board
+    board.log.append((piece, x, y))
 
 
 def replay(board: Board) -> Board:
-    """A fresh board of the same size built by `put` from `board`'s log alone (WorldError when
-    an entry of the log is not a legal put)."""
+    """A fresh board of the same size built from `board`'s log alone, every put checked again
+    (WorldError when one is not a legal put). Its stacks hold the very piece objects of the
+    log, as `board`'s do when only put changed it."""
     fresh = Board(board.rows, board.cols)
-    for shape, color, x, y in board.log:
-        put(fresh, shape, color, x, y)
+    for piece, x, y in board.log:
+        if type(piece) is not tuple:
+            _fail(E.FORBIDDEN, f"a logged piece is a {type(piece).__name__}, not a tuple")
+        shape, color = piece
+        _place(fresh, piece, x, y, check(fresh, shape, color, x, y))
     return fresh

@@ -202,18 +202,35 @@ def _forge_sneaky(b):
     b.stacks[5].append((Sneaky("washer"), Sneaky("red")))
 
 
-def _forge_log(b):
-    b.log.append(("screw", "purple", 4, 4))
-    b.stacks[36].append(("screw", "purple"))
+def _forge_log(b):  # storage and log forged alike: the replay's checks refuse the purple screw
+    piece = ("screw", "purple")
+    b.log.append((piece, 4, 4))
+    b.stacks[36].append(piece)
+    b.puts += 1
+
+
+def _forge_log_screw_on_screw(b):
+    piece = ("screw", "red")
+    b.log.append((piece, 0, 0))
+    b.stacks[0].append(piece)
     b.puts += 1
 
 
 def _forge_unhashable_log(b):
-    b.log.append((["washer"], "red", 99, 4))
+    b.log.append(((["washer"], "red"), 99, 4))
+
+
+def _forge_log_of_lists(b):
+    b.log.append((["washer", "red"], 1, 1))
+
+
+def _forge_equal_copy(b):  # an equal piece that put did not place
+    b.stacks[0][0] = ("screw", "green")
 
 
 FORGERIES = [_forge_purple_screw, _forge_six, _forge_off_board, _forge_screw_on_screw, _forge_eight_without_puts,
-             _forge_list_piece, _forge_list_stack, _forge_surrogate, _forge_sneaky, _forge_log, _forge_unhashable_log]
+             _forge_list_piece, _forge_list_stack, _forge_surrogate, _forge_sneaky, _forge_log,
+             _forge_log_screw_on_screw, _forge_unhashable_log, _forge_log_of_lists, _forge_equal_copy]
 
 
 @pytest.mark.parametrize("forge", FORGERIES, ids=lambda f: f.__name__[7:])
