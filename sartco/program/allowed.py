@@ -30,6 +30,17 @@ PROVIDED = frozenset({"put", "init_board"})  # `board` is provided too, but may 
 DENIED = frozenset(dir(builtins)) - ALLOWED_BUILTINS - {"True", "False", "None", "Ellipsis", "NotImplemented", "__name__"}
 ATTRIBUTES = METHODS.union(*MEMBERS.values())  # every attribute name a program may read
 
+
+def attribute_problem(name: str) -> str | None:
+    """Why a program may not read the attribute `name` (in `x.name` or as a string given to a
+    stand-in: named.py), or None."""
+    if name[:1] == "_":
+        return f"attributes starting with an underscore reach the interpreter: .{name}"
+    if name not in ATTRIBUTES:
+        return (f"attribute .{name} is not available in the sandbox (only the common methods of "
+                f"str, list, dict, set and tuple, and the members of the allowed modules)")
+    return None
+
 # the fields of each allowed node type that hold child nodes; a type not listed is forbidden
 A = ast
 FIELDS: dict[type, tuple[str, ...]] = {

@@ -12,8 +12,11 @@ at most a tenth of a wall time, which the chunk's first program shares: so a kil
 answer of a chunk of several blames nobody yet, and the rest runs again, each program compiled
 at its own turn.
 
-Workers are started with `python -I -S` from one long-lived thread (`spawn`), so that they die
-with the parent process (worker.py).
+Workers are started from one long-lived thread (`spawn`), so that they die with the parent
+process (worker.py), isolated as `python -I -S` would be (`-s -S -P`: no user site, no site, no
+script or working folder on sys.path; an environment without PYTHON* variables) except for one
+variable that -I would ignore: PYTHONHASHSEED=0, so that str hashes, and with them the order of
+sets and everything built from it, are the same in every worker, run and machine.
 """
 from __future__ import annotations
 
@@ -44,6 +47,8 @@ START_TIMEOUT = 30.0
 PIPE_SIZE = 1 << 20  # bytes of answers a worker can write ahead of the parent
 READ_SIZE = 1 << 16  # bytes per read (a read allocates its whole size first)
 _ROOT = str(Path(__file__).resolve().parents[2])
+ISOLATED = ("-s", "-S", "-P")  # -I without -E (see the module docstring)
+HASH_SEED = "0"
 _BOOT = (
     "import sys; sys.path.insert(0, sys.argv[1]); "
     "from sartco.program.worker import main; sys.exit(main(int(sys.argv[2])))"
@@ -64,7 +69,7 @@ class Worker:
 
     # -- process ---------------------------------------------------------------------------
     def start(self):
-        self.proc = spawn([sys.executable, "-I", "-S", "-c", _BOOT, _ROOT, str(os.getpid())])
+        self.proc = spawn([sys.executable, *ISOLATED, "-c", _BOOT, _ROOT, str(os.getpid())])
         for pipe in (self.proc.stdin, self.proc.stdout):  # room for items sent ahead and answers that
             try:  # pile up while the parent waits (Linux; elsewhere the default size)
                 fcntl.fcntl(pipe.fileno(), fcntl.F_SETPIPE_SZ, PIPE_SIZE)
@@ -216,5 +221,12 @@ def spawn(argv: list[str]) -> subprocess.Popen:
         executor = _spawner[1]
     return executor.submit(
         subprocess.Popen, argv, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
-        close_fds=True, cwd="/",
+        close_fds=True, cwd="/", env=_environment(),
     ).result()
+
+
+def _environment() -> dict[str, str]:
+    """The parent's environment without PYTHON* variables, and the fixed hash seed."""
+    env = {k: v for k, v in os.environ.items() if not k.startswith("PYTHON")}
+    env["PYTHONHASHSEED"] = HASH_SEED
+    return env

@@ -8,7 +8,11 @@ module is refused, naming why: `os`, `sys`, `subprocess`, `importlib`, `builtins
 `pickle`, `io`, `socket`, ... reach the interpreter, the file system or the network; `random`
 would make the board a matter of chance; `re` can backtrack in C code for longer than any
 budget sees; `collections.namedtuple`, `typing.get_type_hints` and `string.Formatter` run text
-as code or read attributes by name, so they are not members. `MEMBERS` (names only)
+as code or read attributes by name, so they are not members; `operator.attrgetter` and
+`methodcaller` read names under the attribute rule of `x.name` (named.py). `copy.copy` and
+`copy.deepcopy` take one argument (the memo would hand out the internals of what they copy;
+a board's copy is an independent board), and typing's caches, shared by a worker's programs,
+are emptied before each program (forget_typing). `MEMBERS` (names only)
 lets instrument.py refuse an unknown module or member before anything runs.
 
 numpy is a stand-in for what honest code of this task does with it: `np.ndarray` (and the
@@ -27,7 +31,7 @@ import operator
 import string
 import typing
 
-from . import budget, formatting
+from . import budget, formatting, named
 from .budget import Forbidden, too_big, too_long
 from .conversions import INT
 from .json_module import MEMBERS as JSON_MEMBERS
@@ -141,6 +145,32 @@ def array(obj, dtype=None):
     return obj if dtype is None else dtype(obj)
 
 
+def shallow_copy(x, *more, **named):
+    """copy.copy with the safe signature (a board's copy is an independent board: world/board.py)."""
+    if more or named:
+        raise TypeError(f"copy() takes exactly one argument ({1 + len(more) + len(named)} given)")
+    return copy.copy(x)
+
+
+def deep_copy(x, *more, **named):
+    """copy.deepcopy without its memo: the objects a copy passes through never reach a program."""
+    if more or named:
+        raise Forbidden("copy.deepcopy takes one argument in the sandbox: its memo would hand out the "
+                        "internals of the objects copied (the board's storage among them)")
+    return copy.deepcopy(x)
+
+
+shallow_copy.__name__ = shallow_copy.__qualname__ = "copy"
+deep_copy.__name__ = deep_copy.__qualname__ = "deepcopy"
+
+
+def forget_typing() -> None:
+    """Empty typing's caches, which are shared by every program of a worker (Literal[x], List[x],
+    ... keep their arguments): runtime calls it before each program."""
+    for clear in typing._cleanups:
+        clear()
+
+
 _TYPING = ("Any", "Callable", "Dict", "FrozenSet", "Iterable", "Iterator", "List", "Literal", "Mapping",
            "Optional", "Sequence", "Set", "Tuple", "Union", "TypeVar", "Generator", "Deque", "DefaultDict")
 _MATH = ("pi", "e", "tau", "inf", "nan", "sqrt", "isqrt", "floor", "ceil", "trunc", "fabs", "gcd", "log",
@@ -163,9 +193,10 @@ _FACTORIES = {
     "typing": lambda: {n: getattr(typing, n) for n in _TYPING},
     "collections": lambda: {"defaultdict": collections.defaultdict, "Counter": collections.Counter,
                             "deque": collections.deque, "OrderedDict": collections.OrderedDict},
-    "copy": lambda: {"copy": copy.copy, "deepcopy": copy.deepcopy},
+    "copy": lambda: {"copy": shallow_copy, "deepcopy": deep_copy},
     "operator": lambda: {**{n: getattr(operator, n) for n in _OPERATOR}, "add": budget.add, "mul": budget.mul,
-                         "pow": budget.power, "mod": formatting.mod, "lshift": budget.lshift},
+                         "pow": budget.power, "mod": formatting.mod, "lshift": budget.lshift,
+                                 "attrgetter": named.attrgetter, "methodcaller": named.methodcaller},
     "string": lambda: {n: getattr(string, n) for n in _STRING},
     "numpy": lambda: {"ndarray": ndarray, "array": array, "zeros": zeros, "ones": ones, "full": full,
                       "arange": arange, "int_": INT, "int32": INT, "int64": INT, "float64": float,

@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import ast
 
-from .allowed import ATTRIBUTES, DENIED, FIELDS, PROVIDED
+from .allowed import DENIED, FIELDS, PROVIDED, attribute_problem
 from .budget import Forbidden
 from .formatting import LONG_NUMBER, SPEC_DIGITS
 from .modules import MEMBERS, refusal
@@ -178,11 +178,9 @@ RULES = {
 def _w_attribute(n, wrapped):
     if type(n.ctx) is not ast.Load:
         fail(n, f"assigning to an attribute (.{n.attr}) is not allowed")
-    if n.attr[0] == "_":
-        fail(n, f"attributes starting with an underscore reach the interpreter: .{n.attr}")
-    if n.attr not in ATTRIBUTES:
-        fail(n, f"attribute .{n.attr} is not available in the sandbox (only the common methods of "
-                f"str, list, dict, set and tuple, and the members of the allowed modules)")
+    problem = attribute_problem(n.attr)
+    if problem:
+        fail(n, problem)
     return _call("$attr", [n.value, _loc(ast.Constant(n.attr), n)], n)
 
 

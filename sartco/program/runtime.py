@@ -37,7 +37,8 @@ from .budget import Forbidden, Limit
 from .execution import MODULE, PAPER, clean, not_a_str
 from .instrument import prepare
 from .methods import CHECKED_METHODS, TYPE_METHODS
-from .modules import Module, import_module
+from .modules import Module, forget_typing, import_module
+from .result import board_result
 
 E = ErrorCode
 MESSAGE_CHARS = 400
@@ -225,6 +226,7 @@ def run(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE, 
     BUILTINS["$t"] = steps.__next__  # no program can reach the dict: one serves them all
     env = {"__builtins__": BUILTINS, "__name__": "__main__", "board": board, "put": put, "init_board": init_board}
     env, scope = namespaces.paper(env, source) if semantics == PAPER else (env, env)
+    forget_typing()  # typing's caches start empty: nothing of an earlier program is in them
     old_limit = sys.getrecursionlimit()
     error = None
     try:
@@ -247,7 +249,9 @@ def run(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE, 
             result_board = last[0]
         env.clear()
         scope.clear()
-        cells, puts = result_board.cells(), result_board.puts
+        cells, puts, forged = board_result(result_board)  # only what put placed leaves the worker
+        if forged is not None:
+            error, message = E.FORBIDDEN, forged
         message = clean(message)
     except MemoryError:
         error, message, cells, puts = E.RESOURCE_LIMIT, "the sandbox ran out of memory while reading the board", {}, 0

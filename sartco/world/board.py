@@ -23,9 +23,14 @@ def _keys(cols: int) -> tuple[str, ...]:
 class Board:
     """A rows x cols grid of stacks, kept row-major in one flat list (cell (x, y) is
     stacks[x * cols + y]: one list to make per board, not one per row). A bridge is listed in
-    both of its cells."""
+    both of its cells. `log` lists the puts that built it, ((shape, colour), x, y) in order: the
+    sandbox replays it to prove that nothing but `put` changed the board (program/result.py).
 
-    __slots__ = ("rows", "cols", "stacks", "puts")
+    Only `put` changes a board: a copy (copy.copy, copy.deepcopy) is an independent board with
+    its own storage and log, and a board refuses to be reduced or pickled (the protocol hands
+    out a board's storage)."""
+
+    __slots__ = ("rows", "cols", "stacks", "puts", "log")
 
     def __init__(self, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS):
         if not (type(rows) is int and type(cols) is int and 1 <= rows <= MAX_SIDE and 1 <= cols <= MAX_SIDE):
@@ -34,6 +39,22 @@ class Board:
         self.cols = cols
         self.stacks: list[list[tuple[str, str]]] = [[] for _ in range(rows * cols)]
         self.puts = 0
+        self.log: list[tuple[tuple[str, str], int, int]] = []
+
+    def __copy__(self) -> "Board":
+        twin = Board(self.rows, self.cols)
+        twin.stacks = [stack.copy() for stack in self.stacks]  # pieces are tuples of str: shared safely
+        twin.puts, twin.log = self.puts, self.log.copy()
+        return twin
+
+    def __deepcopy__(self, memo) -> "Board":
+        return self.__copy__()  # the memo never sees the storage
+
+    def __reduce_ex__(self, protocol):
+        raise WorldError(ErrorCode.FORBIDDEN, "a board cannot be reduced or pickled: only put changes a board")
+
+    def __reduce__(self):
+        return self.__reduce_ex__(0)
 
     def __repr__(self) -> str:
         return f"<board {self.rows}x{self.cols}, {self.puts} pieces>"

@@ -44,7 +44,9 @@ def check(board: Board, shape, color, x, y) -> int | None:
     height = len(anchor)
     if height >= MAX_DEPTH:
         _fail(E.VALUE_ERROR, f"cell ({x}, {y}) is full ({MAX_DEPTH} pieces)")
-    offset = BRIDGES.get(shape) if isinstance(shape, str) else None
+    # compared by value on exact built-in types only: a str subclass may answer any == (and run)
+    name = shape if type(shape) is str else None
+    offset = BRIDGES.get(name)
     second = None
     if offset is not None:
         x2, y2 = x + offset[0], y + offset[1]
@@ -65,13 +67,17 @@ def check(board: Board, shape, color, x, y) -> int | None:
         if second is not None:  # a bridge: its second cell too; bridges are exempt from the same-shape rules
             if stacks[second][-1][0] in NOTHING_ON_TOP:
                 _fail(E.NOT_ON_TOP_OF_SCREW, f"cell ({x2}, {y2}) has a {stacks[second][-1][0]} on top; nothing goes on a screw")
-        elif top == shape:
+        elif top == name:
             _fail(E.SAME_SHAPE_STACKING, f"{shape} directly on a {shape} at ({x}, {y})")
-        elif height >= 2 and anchor[-2][0] == shape:
+        elif height >= 2 and anchor[-2][0] == name:
             _fail(E.SAME_SHAPE_AT_ALTERNATE_LEVELS, f"{shape} two levels above a {shape} at ({x}, {y})")
-    if shape not in SHAPES:
+    if name not in SHAPES:
+        if name is None:
+            _fail(E.KEY_ERROR, f"a shape is one of {', '.join(SHAPES)}, not a {type(shape).__name__}")
         _fail(E.KEY_ERROR, f"unknown shape {shape!r:.40}; expected one of {', '.join(SHAPES)}")
-    if color not in COLORS:
+    if type(color) is not str or color not in COLORS:
+        if type(color) is not str:  # (see name above)
+            _fail(E.KEY_ERROR, f"a colour is one of {', '.join(COLORS)}, not a {type(color).__name__}")
         _fail(E.KEY_ERROR, f"unknown colour {color!r:.40}; expected one of {', '.join(COLORS)}")
     return second
 
@@ -80,11 +86,27 @@ def put(board: Board, shape, color, x, y) -> Board:
     """Place one piece, or raise WorldError and leave the board unchanged."""
     if not isinstance(board, Board):
         _fail(E.TYPE_ERROR, f"put: the first argument must be a board, got {type(board).__name__}")
-    second = check(board, shape, color, x, y)
-    piece = (shape, color)
+    _place(board, (shape, color), x, y, check(board, shape, color, x, y))
+    return board
+
+
+def _place(board: Board, piece: tuple, x: int, y: int, second: int | None):
     stacks = board.stacks
     stacks[x * board.cols + y].append(piece)
     if second is not None:
         stacks[second].append(piece)
     board.puts += 1
-    return board
+    board.log.append((piece, x, y))
+
+
+def replay(board: Board) -> Board:
+    """A fresh board of the same size built from `board`'s log alone, every put checked again
+    (WorldError when one is not a legal put). Its stacks hold the very piece objects of the
+    log, as `board`'s do when only put changed it."""
+    fresh = Board(board.rows, board.cols)
+    for piece, x, y in board.log:
+        if type(piece) is not tuple:
+            _fail(E.FORBIDDEN, f"a logged piece is a {type(piece).__name__}, not a tuple")
+        shape, color = piece
+        _place(fresh, piece, x, y, check(fresh, shape, color, x, y))
+    return fresh

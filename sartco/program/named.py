@@ -1,0 +1,63 @@
+"""Stand-ins that take attribute names as strings (operator.attrgetter, operator.methodcaller):
+each name is read under the same rule as `x.name` in the source (allowed.attribute_problem
+before running, runtime._attr at run time), so no string reaches what an attribute cannot.
+Any future stand-in that reads attributes by name (functools.wraps' `assigned`/`updated`, ...)
+reads them through `read`."""
+from __future__ import annotations
+
+from .budget import Forbidden
+
+
+def read(obj, name):
+    """`obj.name` for a name given as a string (dotted names as attrgetter takes them)."""
+    # imported here: allowed.py and runtime.py import the stand-in modules that use this one
+    from .allowed import attribute_problem
+    from .runtime import _attr
+
+    if type(name) is not str:
+        raise TypeError(f"attribute name must be a str, not {type(name).__name__}")
+    for part in name.split("."):
+        problem = attribute_problem(part)
+        if problem:
+            raise Forbidden(problem)
+        obj = _attr(obj, part)
+    return obj
+
+
+class attrgetter:  # noqa: N801 - operator's name
+    """operator.attrgetter(*names): f(obj) -> obj.name, or a tuple for several names."""
+
+    __slots__ = ("_names",)
+
+    def __init__(self, name, *names):
+        self._names = (name, *names)
+        for n in self._names:
+            if type(n) is not str:
+                raise TypeError(f"attribute name must be a str, not {type(n).__name__}")
+
+    def __call__(self, obj):
+        if len(self._names) == 1:
+            return read(obj, self._names[0])
+        return tuple(read(obj, n) for n in self._names)
+
+    def __repr__(self):
+        return f"operator.attrgetter({', '.join(map(repr, self._names))})"
+
+
+class methodcaller:  # noqa: N801 - operator's name
+    """operator.methodcaller(name, *args, **kwargs): f(obj) -> obj.name(*args, **kwargs)."""
+
+    __slots__ = ("_name", "_args", "_kwargs")
+
+    def __init__(self, name, /, *args, **kwargs):
+        if type(name) is not str:
+            raise TypeError("method name must be a string")
+        self._name, self._args, self._kwargs = name, args, kwargs
+
+    def __call__(self, obj):
+        if "." in self._name:
+            raise Forbidden(f"method name {self._name!r:.40} is not a method")
+        return read(obj, self._name)(*self._args, **self._kwargs)
+
+    def __repr__(self):
+        return f"operator.methodcaller({self._name!r:.40}, ...)"
