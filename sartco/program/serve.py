@@ -107,7 +107,7 @@ def _answers(lines, rows, cols, limits, workers, cache) -> bytes:
     try:
         answers = dispatch("line", items, keys, rows, cols, limits, workers, cache)
     except Exception as exc:  # noqa: BLE001 - every line gets an answer, whatever happens
-        answers = [failed(ErrorCode.RUNTIME_ERROR, f"sandbox failure: {exc}")] * len(items)
+        answers = [failed(ErrorCode.HARNESS_ERROR, f"sandbox failure: {exc}")] * len(items)
     text = []
     for (number, raw), ans in zip(lines, answers):
         if type(ans) is bytes:
