@@ -62,6 +62,8 @@ run clem transcribe -r "$RESULTS"
 # number), so a single eval over everything takes many times longer (44 min instead of minutes)
 rm -f "$RESULTS/raw.csv"
 for pair in "${PLAYED[@]}"; do set -- $pair; run clem eval -r "$RESULTS" -g "$1" -m "$2"; done
+# sartco report exits 3 when any episode is a harness error (the harness failed, not the model;
+# harness.md names them): then make main fails here, with the report's line at the end of the log
 run sartco report -r "$RESULTS" --out "$SCORES"
 
 step "results: $RESULTS/ (transcripts, results.csv, main.log), tables in $SCORES/"
