@@ -14,7 +14,10 @@ from sartco.program import pool
 from sartco.report import tables
 from sartco.report.harness_table import HARNESS_STATUS
 
+from play_helpers import GAMES
 from test_episodes import GOLD, SINGLE, fence, instance, outcome
+from test_paper_protocol import VARIANTS, paper_episodes  # noqa: F401 - paper_episodes is a fixture
+from test_paper_protocol import experiment as paper_experiment, instances as paper_instances
 
 FEEDBACK = dict(SINGLE, name="harness_feedback", attempts=3)
 
@@ -104,3 +107,20 @@ def test_a_program_that_exhausts_memory_stays_the_models(play_episodes):
     s = result["scores"]["episode scores"]
     assert outcome(result["scores"]) == "lose" and s["Error Category"] in ("resource_limit", "timeout")
     assert s["Main Score"] == 0.0 and "Harness Error" not in s
+
+
+def test_cobot_describe_records_a_harness_fault(play_episodes, monkeypatch, fresh_pool):
+    episodes = json.loads((GAMES / "cobot_describe" / "in" / "instances.json").read_text())["experiments"][0]
+    experiment = {k: v for k, v in episodes.items() if k != "game_instances"}
+    no_worker(monkeypatch, "no worker for the describe game")
+    result, = play_episodes([episodes["game_instances"][0]], experiment, game="cobot_describe")
+    _harness(result, "sandbox unavailable: no worker for the describe game")
+
+
+def test_the_paper_protocol_records_a_harness_fault(paper_episodes, play_episodes, monkeypatch, fresh_pool):
+    ep = paper_episodes[VARIANTS[0]]
+    no_worker(monkeypatch, "no worker for the paper protocol")
+    result, = play_episodes(paper_instances([ep]), paper_experiment(ep, "harness_paper"),
+                            game="cobot_instruct_paper")
+    _harness(result, "sandbox unavailable: no worker for the paper protocol")
+    assert "sartco_paper" not in result["interactions"]  # no turn scored 0 for the harness's fault
