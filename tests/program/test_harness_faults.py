@@ -61,12 +61,16 @@ def test_lost_and_failed_batches(monkeypatch):
     assert (ex.error, ex.message) == (E.HARNESS_ERROR, "sandbox failure: RuntimeError: pool bug")
 
 
-def test_sartco_execute_answers_a_harness_error(monkeypatch, fresh_pool):
-    fake_worker(monkeypatch, "sys.exit(1)")
+@pytest.mark.parametrize("misbehave,reason", [
+    ("sys.exit(1)", "the sandbox worker ended unexpectedly (status 1)"),
+    ("for _ in range(n): print('garbage', flush=True)", "garbled answer from the sandbox worker: b'garbage'"),
+])
+def test_sartco_execute_answers_a_harness_error(monkeypatch, fresh_pool, misbehave, reason):
+    fake_worker(monkeypatch, misbehave)
     out = io.BytesIO()
     serve(io.BytesIO(json.dumps({"id": "a", "code": PUT}).encode() + b"\n"), out)
     answer = json.loads(out.getvalue())
-    assert answer["error"] == "harness_error" and "ended unexpectedly" in answer["message"]
+    assert (answer["id"], answer["ok"], answer["error"], answer["message"]) == ("a", False, "harness_error", reason)
 
 
 def test_a_program_that_exhausts_memory_stays_resource_limit(fresh_pool):
