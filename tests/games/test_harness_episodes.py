@@ -124,3 +124,15 @@ def test_the_paper_protocol_records_a_harness_fault(paper_episodes, play_episode
                             game="cobot_instruct_paper")
     _harness(result, "sandbox unavailable: no worker for the paper protocol")
     assert "sartco_paper" not in result["interactions"]  # no turn scored 0 for the harness's fault
+
+
+def test_score_responses_answers_a_harness_fault_with_an_error_line(monkeypatch, fresh_pool):
+    from sartco.protocols.score import answer_line, score_ours
+
+    episode = {"id": "f/s/single_turn", "protocol": "sartco", "file": "f", "sample": "s", "variant": "single_turn",
+               "instance": dict(instance(0), turns=["build it"])}
+    no_worker(monkeypatch, "no worker for score-responses")
+    line = answer_line({"id": episode["id"], "responses": [fence("\n".join(GOLD))], "where": "-:1"},
+                       {episode["id"]: episode}, score_ours)
+    assert line == {"id": "f/s/single_turn", "error": "-:1: harness_error: sandbox: sandbox unavailable: "
+                                                     "no worker for score-responses"}
