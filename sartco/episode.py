@@ -20,6 +20,7 @@ CELL_F1 = "Cell F1"
 ERROR_CATEGORY = "Error Category"
 ERROR_FAMILY = "Error Family"
 PUTS = "Puts"
+HARNESS_REASON = "Harness Error"  # why the harness failed (a harness_error episode only; a string)
 BUILD_SCORES = (EXECUTION_SUCCESS, EXACT_MATCH, CODEBLEU, CELL_PRECISION, CELL_RECALL, CELL_F1)
 # feedback (repair) episodes and the describe dialogue: the first and the last build
 ES_AT_1 = "ES@1"

@@ -66,6 +66,8 @@ rm -f "$RESULTS/raw.csv"
 for pair in "${PLAYED[@]}"; do set -- $pair; run clem eval -r "$RESULTS" -g "$1" -m "$2"; done
 # stops (exit 3) when an episode of an instance file is missing, errored, unscored or unreadable:
 # the ids are in the log's last lines and $SCORES/completeness.md; `sartco resume` completes the run
+# sartco report exits 3 when any episode is a harness error (the harness failed, not the model;
+# harness.md names them): then make main fails here, with the report's line at the end of the log
 run sartco report -r "$RESULTS" --out "$SCORES"
 
 step "results: $RESULTS/ (transcripts, results.csv, main.log), tables in $SCORES/"

@@ -44,14 +44,15 @@ def scripted_episode(game_id: int, target: dict, gold: list[str], turns: list[st
 
 def play(instances: list[dict], experiment: dict, results_dir: Path, model: str = "mock",
          game: str = "cobot_instruct", gen_args: dict | None = None) -> list[dict]:
-    """Run the instances as one experiment of a game entry of games/cobot_instruct/clemgame.json;
+    """Run the instances as one experiment of a game entry of games/*/clemgame.json;
     return, per instance, {"interactions", "scores", "dir"}."""
     from clemcore import backends
     from clemcore.clemgame import (ExperimentFileSaver, GameBenchmark, GameBenchmarkCallbackList, GameInstances,
                                    GameSpec, InstanceFileSaver, InteractionsFileSaver, ResultsFolder)
     from clemcore.clemgame.runners import sequential
 
-    spec = next(s for s in GameSpec.from_directory(str(GAMES / "cobot_instruct")) if s.game_name == game)
+    spec = next(s for folder in ("cobot_instruct", "cobot_describe")
+                for s in GameSpec.from_directory(str(GAMES / folder)) if s.game_name == game)
     models = backends.load_models([model], gen_args or dict(temperature=0.0, max_tokens=300))
     folder = ResultsFolder(Path(results_dir), run_dir=backends.Model.to_identifier(models))
     infos = backends.Model.to_infos(models)

@@ -39,6 +39,7 @@ from sartco.clem.dialogue import (DONE, Dialogue, DialogueLog, DialogueScorer, a
                                   parse_answer, parse_builder_answer, parse_review, question_message, review_message,
                                   settings_of)
 from sartco.clem.dialogue_answers import builder_answers, describer_answers
+from sartco.clem.harness import HarnessGuard
 from sartco.clem.outcomes import log_outcome
 from sartco.clem.players import Builder
 from sartco.clem.transcript import MarkdownTranscript
@@ -48,7 +49,7 @@ from sartco.world import ErrorCode
 DESCRIBER_PARSERS = {"instruction": parse_instruction, "answer": parse_answer, "review": parse_review}
 
 
-class CobotDescribe(MarkdownTranscript, DialogueGameMaster):
+class CobotDescribe(HarnessGuard, MarkdownTranscript, DialogueGameMaster):
 
     def _on_setup(self, **instance):
         self.episode: DescribeEpisode = instance

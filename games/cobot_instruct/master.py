@@ -36,6 +36,7 @@ from sartco.clem import benchmark  # the module, not the class: one GameBenchmar
 from sartco.clem.answers import instruct_answers
 from sartco.clem.building import BuildRecord, build_for, finish_build, log_build, parse_failure_for
 from sartco.clem.feedback import feedback_for, max_attempts
+from sartco.clem.harness import HarnessGuard
 from sartco.clem.outcomes import log_outcome
 from sartco.clem.paper import PAPER_EPISODE_FIELDS, PaperScorer, finish_paper, is_paper
 from sartco.clem.parsing import parse_code
@@ -44,7 +45,7 @@ from sartco.clem.transcript import MarkdownTranscript
 from sartco.episode import ATTEMPTS_KEY, InstructEpisode, PaperProtocolEpisode
 
 
-class CobotInstruct(MarkdownTranscript, DialogueGameMaster):
+class CobotInstruct(HarnessGuard, MarkdownTranscript, DialogueGameMaster):
 
     def _on_setup(self, **instance):
         self.instance: InstructEpisode | PaperProtocolEpisode = instance

@@ -3,6 +3,8 @@ live inside a game folder). Reuse these from any game whose player writes code:
 
 - parsing.parse_code / ParseError      find the code in an answer (no code -> aborted)
 - outcomes                             the one ErrorCode -> clemcore outcome/logging translation
+- harness.HarnessGuard / harness_scores   harness faults (sandbox, master, scorer) -> harness_error,
+                                       aborted, never the model's error
 - building.build_for / parse_failure_for / finish_build / BuildRecord   execute, compare, record, end
 - feedback.feedback_for / max_attempts   the one message after a failed attempt (feedback
                                        experiments: execution facts only, never the target)

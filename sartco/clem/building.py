@@ -3,7 +3,9 @@
 The game master calls `build_for(instance, ...)` (`build` with the instance's board fields) once
 per episode (or once per attempt in a repair experiment) and ends the episode with
 `finish_build`: the build's board event (`log_build`), then `end_build`, which records it for the
-scorer and moves the game state with sartco.clem.outcomes (a dialogue whose builds' events are
+scorer and moves the game state with sartco.clem.outcomes. A build that the sandbox could not run
+(`harness_error`) raises HarnessFault from `build_for`: the master's harness guard
+(sartco.clem.harness) records it, never as the model's error (a dialogue whose builds' events are
 logged as they happen calls `end_build` alone). The scorer reads the record back with `BuildRecord.from_json`; it never
 executes anything.
 """
@@ -15,7 +17,7 @@ from sartco.episode import BUILD_KEY
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, SUCCESS_CATEGORY, ErrorCode, category_family
 from sartco.world.render import differing_cells
 
-from .outcomes import set_attempts_outcome
+from .outcomes import HarnessFault, set_attempts_outcome
 from .transcript import code_block, picture, text_block
 
 BOARD_EVENT = "board"               # the GM->GM event that shows target and built board
@@ -62,8 +64,8 @@ class BuildRecord:
         that differ, P/R/F1): never send it to a player - sartco.clem.feedback is what a builder sees."""
         if self.category == SUCCESS_CATEGORY:
             return f"success: the target was built ({self.puts} puts)"
-        if self.error == ErrorCode.PARSE_ERROR:
-            return f"parse_error: {self.message}"
+        if self.error in (ErrorCode.PARSE_ERROR, ErrorCode.HARNESS_ERROR):
+            return f"{self.error}: {self.message}"
         diff = len(differing_cells(self.target, self.cells))
         detail = f" - {self.message}" if self.message else ""
         return (f"{self.category} ({self.family}){detail}; {self.puts} puts, {diff} cells differ, "
@@ -100,27 +102,33 @@ def build(builder_code: str, target: dict, *, given_code: str = "", rows: int = 
 
 
 def parse_failure(target: dict, message: str, *, turn_codes: list[str] | None = None,
-                  rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS) -> BuildRecord:
-    """The record of an episode aborted because an answer held no code: nothing was executed."""
+                  rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS,
+                  error: ErrorCode = ErrorCode.PARSE_ERROR) -> BuildRecord:
+    """The record of an episode aborted because an answer held no code (or, with
+    error=HARNESS_ERROR, because the harness failed): nothing was executed."""
     code = "\n".join(turn_codes or [])
     return BuildRecord(
-        builder_code=code, program="", ok=False, error=str(ErrorCode.PARSE_ERROR), message=message,
-        cells={}, target=target, puts=0, es=0, category=str(ErrorCode.PARSE_ERROR),
+        builder_code=code, program="", ok=False, error=str(error), message=message,
+        cells={}, target=target, puts=0, es=0, category=str(error),
         precision=0.0, recall=0.0, f1=0.0, rows=rows, cols=cols, turn_codes=list(turn_codes or []),
     )
 
 
 def build_for(instance: dict, builder_code: str, turn_codes: list[str] | None = None) -> BuildRecord:
     """`build` with the target, given code and board size of a game instance (the fields of
-    sartco.clem.episodes.board_fields)."""
-    return build(builder_code, instance["target"], given_code=instance["given_code"],
-                 rows=instance["rows"], cols=instance["cols"], turn_codes=turn_codes)
+    sartco.clem.episodes.board_fields); HarnessFault when the sandbox failed (harness_error)."""
+    record = build(builder_code, instance["target"], given_code=instance["given_code"],
+                   rows=instance["rows"], cols=instance["cols"], turn_codes=turn_codes)
+    if record.error == ErrorCode.HARNESS_ERROR:
+        raise HarnessFault(f"sandbox: {record.message}")
+    return record
 
 
-def parse_failure_for(instance: dict, message: str, turn_codes: list[str] | None = None) -> BuildRecord:
+def parse_failure_for(instance: dict, message: str, turn_codes: list[str] | None = None,
+                      error: ErrorCode = ErrorCode.PARSE_ERROR) -> BuildRecord:
     """`parse_failure` with the target and board size of a game instance."""
     return parse_failure(instance["target"], message, turn_codes=turn_codes,
-                         rows=instance["rows"], cols=instance["cols"])
+                         rows=instance["rows"], cols=instance["cols"], error=error)
 
 
 def build_answers(instance: dict, answers: list[str]) -> BuildRecord:

@@ -4,9 +4,11 @@
 - the program raised, broke a rule, hit a budget     -> Outcome.FAILURE (lost, category recorded)
 - the program ran and built another board            -> Outcome.FAILURE (lost, mismatch category)
 - the program built the target                       -> Outcome.SUCCESS
+- the harness failed (ErrorCode.HARNESS_ERROR: the sandbox, the game master or the scorer, never
+  the model)                                        -> Outcome.ABORTED (not played, Main Score NaN)
 Feedback (repair) experiments, several attempts: the last attempt decides, except that a last
 attempt without code loses (the builder did play) unless no attempt held code at all (aborted,
-as in the paper's protocol) - `outcome_of_attempts`.
+as in the paper's protocol) - `outcome_of_attempts`; a harness fault in any attempt aborts.
 The paper protocol (sartco.clem.paper) never aborts: its episode succeeds when every turn's ES
 does (`set_share_outcome`).
 Games call `set_attempts_outcome` (through sartco.clem.building.finish_build) or
@@ -20,12 +22,21 @@ from clemcore.clemgame.master import Outcome
 from sartco.world import ErrorCode, category_family
 
 
+class HarnessFault(Exception):
+    """The harness, not the model, failed (the sandbox gave harness_error, or the game master or
+    the scorer raised): sartco.clem.harness records the episode as harness_error, aborted."""
+
+    def __init__(self, reason: str):
+        super().__init__(reason)
+        self.reason = reason
+
+
 def outcome_for(category: str | ErrorCode | None) -> Outcome:
     """The clemcore outcome of an episode whose final build has this category (None = success)."""
     family = category_family(category)
     if family == "success":
         return Outcome.SUCCESS
-    return Outcome.ABORTED if family == "parse" else Outcome.FAILURE
+    return Outcome.ABORTED if family in ("parse", "harness") else Outcome.FAILURE
 
 
 def outcome_of_attempts(categories) -> Outcome:
@@ -34,6 +45,8 @@ def outcome_of_attempts(categories) -> Outcome:
     categories = list(categories)
     if not categories:
         raise ValueError("an episode without attempts has no outcome")
+    if ErrorCode.HARNESS_ERROR in categories:
+        return Outcome.ABORTED
     outcome = outcome_for(categories[-1])
     if outcome is Outcome.ABORTED and any(outcome_for(c) is not Outcome.ABORTED for c in categories):
         return Outcome.FAILURE

@@ -19,11 +19,11 @@ from __future__ import annotations
 from sartco.episode import PAPER_KEY, PAPER_SCORES, PaperExperiment, PaperProtocolEpisode
 from sartco.paper import PROTOCOL
 from sartco.paper.table3 import generation, load_table3
-from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
+from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, ErrorCode
 
 from .benchmark import json_fields
 from .building import build_answers, log_build
-from .outcomes import set_share_outcome
+from .outcomes import HarnessFault, set_share_outcome
 from .scoring import BuildScorer
 
 PAPER_EVENT = "paper_turn"     # one GM->GM event per turn: what the authors' scorer read and scored
@@ -72,6 +72,7 @@ def finish_paper(game_master, instance: dict, answers: list[str]) -> None:
     from sartco.paper.scoring import score_dialogue
 
     score = score_dialogue(answers, instance)
+    check_turns(score)
     turns = []
     for k, (answer, turn) in enumerate(zip(answers, score.turns)):
         reading = read_answer(answer, instance["variant"])
@@ -85,6 +86,13 @@ def finish_paper(game_master, instance: dict, answers: list[str]) -> None:
     game_master.log_key(PAPER_KEY, {"em": score.em, "cb": score.cb, "es": score.es, "turns": turns})
     log_build(game_master, build_answers(instance, answers))
     set_share_outcome(game_master.state, score.es)
+
+
+def check_turns(score) -> None:
+    """HarnessFault when the sandbox failed on a turn (harness_error): never a turn the model lost."""
+    for turn in score.turns:
+        if turn.category == ErrorCode.HARNESS_ERROR:
+            raise HarnessFault(f"sandbox: {turn.message}")
 
 
 class PaperScorer(BuildScorer):

@@ -6,8 +6,10 @@ Episode scores (scores.json):
   Exact Match        0/1, whitespace-normalised, against the gold code of the same style (NaN when aborted)
   CodeBLEU           0..1, codebleu weights 0.25 x 4, against the same gold code (NaN when aborted)
   Cell Precision / Cell Recall / Cell F1   of the built board against the target (NaN when aborted)
-  Error Category     "success", an ErrorCode value (python/world/sandbox error or mismatch) or "parse_error"
-  Error Family       success | parse | python | world | sandbox | mismatch
+  Error Category     "success", an ErrorCode value (python/world/sandbox error or mismatch), "parse_error"
+                     or "harness_error" (the harness failed, not the model: aborted, sartco.clem.harness)
+  Error Family       success | parse | python | world | sandbox | mismatch | harness
+  Harness Error      why the harness failed (harness_error episodes only)
   Puts               pieces placed by the executed program
 Aborted / Success / Lose come from the game's own log (sartco.clem.outcomes.log_outcome).
 
@@ -27,17 +29,27 @@ from clemcore.clemgame import GameScorer, metrics
 
 from sartco.episode import (ATTEMPT_CATEGORIES, ATTEMPTS, ATTEMPTS_KEY, BUILD_KEY, BUILD_SCORES, CATEGORY_SEPARATOR,
                             CELL_F1, CELL_PRECISION, CELL_RECALL, CODEBLEU, ERROR_CATEGORY, ERROR_FAMILY, ES_AT_1,
-                            ES_AT_N, EXACT_MATCH, EXECUTION_SUCCESS, MAX_ATTEMPTS, PUTS)
+                            ES_AT_N, EXACT_MATCH, EXECUTION_SUCCESS, HARNESS_REASON, MAX_ATTEMPTS, PUTS)
 from sartco.world import ErrorCode, category_family
 
 from .building import BuildRecord
 from .feedback import max_attempts
+from .harness import fault_reason, harness_scores
 
 NAN = float("nan")
 
 
 class BuildScorer(GameScorer):
     """The scores of an episode's recorded build, against the episode's gold code."""
+
+    def compute_scores(self, interactions: dict) -> None:
+        """clemcore's scoring, unchanged, inside the one guard of every scorer of ours: an exception
+        makes the episode a harness_error (sartco.clem.harness), never a model's score or a lost
+        scores.json."""
+        try:
+            super().compute_scores(interactions)
+        except Exception as exc:  # noqa: BLE001 - a fault of the scorer, never the model's
+            harness_scores(self, fault_reason("scorer", exc))
 
     def compute_round_score(self, round_idx, round_events) -> None:
         pass  # the build is judged once, at the end of the episode
@@ -55,6 +67,8 @@ class BuildScorer(GameScorer):
             category = record.category if record else str(ErrorCode.PARSE_ERROR)
             self.log_episode_score(ERROR_CATEGORY, category)
             self.log_episode_score(ERROR_FAMILY, category_family(category))
+            if category == ErrorCode.HARNESS_ERROR:
+                self.log_episode_score(HARNESS_REASON, record.message)
             self.log_episode_score(PUTS, 0)
             self.log_episode_score(metrics.BENCH_SCORE, NAN)
             return

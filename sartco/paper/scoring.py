@@ -112,6 +112,8 @@ def execution(prediction: str, gold: str, given_function: str = "") -> tuple[boo
     if not ex.ok:
         return False, str(ErrorCode(ex.error)), ex.message or ""
     gold_run = _gold_run(es_program(gold, given_function))
+    if gold_run.error == ErrorCode.HARNESS_ERROR:  # the sandbox's fault: never kept for later turns
+        _gold_run.cache_clear()
     if not gold_run.ok:  # no gold board to equal (the authors' scorer fails the turn too)
         return False, str(ErrorCode(gold_run.error)), f"the gold program failed: {gold_run.message or ''}"
     cmp = compare(ex.cells, gold_run.cells)

@@ -32,7 +32,10 @@ file system, the network or the scoring:
 - format fields that read attributes or items (`{0.x}`, `{0[k]}`), widths above 999, `*` widths.
 Budget stops: `timeout` (steps, wall time) and `resource_limit` (depth, length, integer size,
 memory, source size); no handler catches them (nor a refusal), and they stay the verdict when a
-program swallows them. A program that crashes its worker gets `runtime_error` "crashed (SIGSEGV)".
+program swallows them (an except handler re-raises them; a `finally` body's first statement
+remembers a RecursionError or MemoryError passing through). A program that crashes its worker
+gets `runtime_error` "crashed (SIGSEGV)". What the program did not cause (no worker could start,
+a garbled or missing answer, a worker's own exit, an internal error) is `harness_error`.
 
 No program spoils another: a worker retires after a budget stop, a MemoryError, an internal
 error, or a program after which it holds 64 MB more than at its start, and the next program

@@ -5,7 +5,8 @@ A worker answers each program on its own line, so the parent knows which program
 gives each one `Limits.wall_time` seconds from the moment the previous answer was read. A late
 answer kills the worker (SIGKILL, then reaped) and the program gets `timeout`; a worker that
 dies gets its program `resource_limit` (out of memory: its own exit status, or SIGKILL from the
-kernel) or `runtime_error` (a crash, named by its signal, or another exit). A worker that
+kernel) or `runtime_error` (a crash, named by its signal); a worker that could not start or ended
+by another exit (the worker's own code failed, not the program) gives `harness_error`. A worker that
 retires after an answer (a leading "!", see worker.py) is replaced before the next program.
 The rest of the batch goes to a fresh worker. A worker compiles each chunk ahead (worker.py), for
 at most a tenth of a wall time, which the chunk's first program shares: so a kill before the first
@@ -145,7 +146,7 @@ class Worker:
                     self.start()
             except (_Dead, OSError, ValueError) as exc:
                 self.kill()
-                results.extend(failed(E.RUNTIME_ERROR, f"sandbox unavailable: {exc}") for _ in todo)
+                results.extend(failed(E.HARNESS_ERROR, f"sandbox unavailable: {exc}") for _ in todo)
                 break
             send = (self.proc.stdin, mode, todo, rows, cols, limits, cache, ahead, semantics)
             writer = None
@@ -200,7 +201,8 @@ def _died(status: int | None) -> Execution:
         except ValueError:
             name = f"signal {-status}"
         return failed(E.RUNTIME_ERROR, f"the program crashed the sandbox worker ({name})")
-    return failed(E.RUNTIME_ERROR, f"the sandbox worker ended unexpectedly (status {status})")
+    # an exit status of the worker's own (its code failed, or it was ended from outside): not the program's
+    return failed(E.HARNESS_ERROR, f"the sandbox worker ended unexpectedly (status {status})")
 
 
 def failed(code: ErrorCode, message: str) -> Execution:

@@ -15,7 +15,9 @@ spell, so a program can neither reach nor shadow them:
 - f-string format specs: a constant one has numbers of at most three digits, a computed one is
   checked when it runs (`$fstr`);
 - every `except` handler starts with `$caught(<the exception>)`, which raises budget stops and
-  refusals again (a program catches its own errors, never the sandbox's).
+  refusals again (a program catches its own errors, never the sandbox's);
+- every `finally` body starts with `$final()`, which remembers a RecursionError or MemoryError
+  passing through (a `return`, `break` or `continue` there would swallow it) as the program's stop.
 """
 from __future__ import annotations
 
@@ -139,6 +141,13 @@ def _r_handler(n, walk):
     n.body.insert(0, _loc(ast.Expr(_call("$caught", [_loc(ast.Name(n.name, _LOAD), n)], n)), n.body[0]))
 
 
+def _r_try(n, walk):
+    """A `finally` body first calls $final, which remembers a depth or memory stop passing through:
+    a `return`, `break` or `continue` in the body would end it, and the stop must stay the verdict."""
+    if n.finalbody:
+        n.finalbody.insert(0, _loc(ast.Expr(_call("$final", [], n.finalbody[0])), n.finalbody[0]))
+
+
 def _r_scope(n, walk):  # global, nonlocal
     for name in n.names:
         check_name(n, name, True, walk)
@@ -168,7 +177,7 @@ def _r_import_from(n, walk):
 RULES = {
     A.arg: _r_arg, A.keyword: _r_keyword, A.FunctionDef: _r_function,
     A.For: _r_loop, A.While: _r_loop, A.Lambda: _r_lambda, A.comprehension: _r_comprehension,
-    A.FormattedValue: _r_formatted, A.ExceptHandler: _r_handler, A.Global: _r_scope, A.Nonlocal: _r_scope,
+    A.FormattedValue: _r_formatted, A.ExceptHandler: _r_handler, A.Try: _r_try, A.Global: _r_scope, A.Nonlocal: _r_scope,
     A.Import: _r_import, A.ImportFrom: _r_import_from,
 }
 

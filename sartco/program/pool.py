@@ -6,7 +6,8 @@ second one writes the chunks (so a worker finds its next chunk waiting). Items w
 (the source) go to the same worker, so its code cache sees all repeats; without keys the shares
 are balanced by size. `execute_many` sends programs (mode "code"), `sartco execute` sends its raw
 input lines (mode "line": the worker parses, runs, compares and writes the finished output line,
-so the parent only routes bytes); `execute` is a batch of one. Each worker is driven through
+so the parent only routes bytes); `execute` is a batch of one. What the model did not cause (no
+worker could start, a garbled or missing answer, a failure of the pool itself) is `harness_error`. Each worker is driven through
 driver.Worker (hard wall time, kills, restarts, the verdicts of dead workers). Nothing raises
 out of `execute`/`execute_many`.
 
@@ -36,7 +37,7 @@ def _decode(line: bytes) -> Execution:
             raise ValueError("unexpected field types")
         return Execution(ok, None if code is None else ErrorCode(code), message, cells, puts)
     except (ValueError, TypeError) as exc:
-        return failed(E.RUNTIME_ERROR, f"garbled answer from the sandbox worker: {exc}")
+        return failed(E.HARNESS_ERROR, f"garbled answer from the sandbox worker: {exc}")
 
 
 _workers: list[Worker] = []
@@ -132,10 +133,10 @@ def execute_many(programs, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, l
         answers = dispatch("code", items, keys, rows, cols, limits, workers, cache, semantics)
         for i, answer in zip(todo, answers):
             results[i] = _decode(answer) if type(answer) is bytes else answer
-        return [r if r is not None else failed(E.RUNTIME_ERROR, "the sandbox returned no result") for r in results]
+        return [r if r is not None else failed(E.HARNESS_ERROR, "the sandbox returned no result") for r in results]
     except Exception as exc:  # noqa: BLE001 - the caller must never see an exception
         n = len(programs) if isinstance(programs, list) else 1
-        return [failed(E.RUNTIME_ERROR, f"sandbox failure: {type(exc).__name__}: {exc}") for _ in range(n)]
+        return [failed(E.HARNESS_ERROR, f"sandbox failure: {type(exc).__name__}: {exc}") for _ in range(n)]
 
 
 def execute(code: str, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, limits: Limits | None = None, *,

@@ -17,9 +17,9 @@ resource_limit, a spent step budget -> timeout, WorldError -> its own code, Forb
 attribute on a type outside TYPE_METHODS, a refused builtin or format field) -> forbidden,
 anything else (AssertionError, RuntimeError, AttributeError, ...) -> runtime_error. A budget
 stop or refusal is the verdict even when the program swallowed it (budget.STOPPED, a spent step
-counter). After a budget stop, a MemoryError or an internal error, SPOILED tells the worker to
-retire; no internal error ever ends as `ok`, and only verdicts that depend on the source alone
-are cached.
+counter; a RecursionError or MemoryError seen by a finally body, `$final`). After a budget stop,
+a MemoryError or an internal error, SPOILED tells the worker to retire; no internal error ever
+ends as `ok` (it is `harness_error`), and only verdicts that depend on the source alone are cached.
 """
 from __future__ import annotations
 
@@ -72,6 +72,15 @@ def _caught(exc):
         raise exc
 
 
+def _final():
+    """The first statement of every finally body: a RecursionError or MemoryError passing through
+    is remembered as the program's stop (budget.STOPPED), so that a `return`, `break` or
+    `continue` in the body cannot swallow it (budget stops of our own remember themselves)."""
+    exc = sys.exc_info()[1]
+    if budget.STOPPED is None and isinstance(exc, (RecursionError, MemoryError)):
+        budget.STOPPED = exc
+
+
 class _Refused:
     """A builtin that reaches the interpreter, files or the terminal, for a program that reads
     its name without binding it (instrument.py refuses the plain case before running)."""
@@ -101,7 +110,7 @@ BUILTINS = {
     "$add": budget.add, "$mul": budget.mul, "$pow": budget.power, "$lshift": budget.lshift, "$mod": formatting.mod,
     "$iadd": budget.iadd, "$imul": budget.imul, "$ipow": budget.power, "$ilshift": budget.lshift,
     "$imod": formatting.mod, "$iitem": budget.iitem, "$slice": slice, "$len": budget.checked_len,
-    "$attr": _attr, "$caught": _caught, "$fstr": formatting.fstring_field,
+    "$attr": _attr, "$caught": _caught, "$final": _final, "$fstr": formatting.fstring_field,
 }
 
 # --- compile (cached by exact source text: the verdict and code object depend on nothing else) --
@@ -138,7 +147,7 @@ def compile_program(source: str, limits, cache: bool = True) -> tuple:
         result, keep = (None, E.RESOURCE_LIMIT, "the sandbox ran out of memory while compiling the program"), False
         _spoil()
     except Exception as exc:  # noqa: BLE001 - a compiler failure must not end the worker
-        result, keep = (None, E.RUNTIME_ERROR, clean(f"internal error while compiling: {type(exc).__name__}: {exc}")), False
+        result, keep = (None, E.HARNESS_ERROR, clean(f"internal error while compiling: {type(exc).__name__}: {exc}")), False
         _spoil()
     finally:
         if collecting:
@@ -238,8 +247,8 @@ def run(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE, 
     except BaseException as exc:  # noqa: BLE001 - everything the program does ends here
         error, message = _verdict(exc, limits)
         del exc
-    # a budget stop or refusal that the program swallowed (finally: return, a StopIteration
-    # ending a map() early) is still its verdict
+    # a budget stop, refusal, RecursionError or MemoryError that the program swallowed (finally:
+    # return/break/continue, a StopIteration ending a map() early) is still its verdict
     if length_hint(steps) == 0 or budget.STOPPED is not None:
         error, message = _verdict(budget.STOPPED, limits)
     budget.STOPPED = None
@@ -256,7 +265,7 @@ def run(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE, 
     except MemoryError:
         error, message, cells, puts = E.RESOURCE_LIMIT, "the sandbox ran out of memory while reading the board", {}, 0
     except Exception as exc:  # noqa: BLE001 - never `ok` after an internal error
-        error, message, cells, puts = E.RUNTIME_ERROR, clean(f"internal error: {type(exc).__name__}"), {}, 0
+        error, message, cells, puts = E.HARNESS_ERROR, clean(f"internal error: {type(exc).__name__}"), {}, 0
         _spoil()
     if error in (E.TIMEOUT, E.RESOURCE_LIMIT):
         _spoil()

@@ -21,7 +21,7 @@ from sartco.world.board import MAX_SIDE
 from .lines import finish, parse_line
 from .pool import dispatch
 from .driver import failed
-from .execution import Limits
+from .execution import Execution, Limits
 
 CHUNK = 1 << 16
 IN_FLIGHT = 2  # batches being run at once (the next one queues on each worker's lock)
@@ -107,12 +107,14 @@ def _answers(lines, rows, cols, limits, workers, cache) -> bytes:
     try:
         answers = dispatch("line", items, keys, rows, cols, limits, workers, cache)
     except Exception as exc:  # noqa: BLE001 - every line gets an answer, whatever happens
-        answers = [failed(ErrorCode.RUNTIME_ERROR, f"sandbox failure: {exc}")] * len(items)
+        answers = [failed(ErrorCode.HARNESS_ERROR, f"sandbox failure: {exc}")] * len(items)
     text = []
     for (number, raw), ans in zip(lines, answers):
-        if type(ans) is bytes:
+        if type(ans) is bytes and ans[:1] == b"{" and ans[-1:] == b"}":
             text.append(ans)
-        else:  # timeout or dead worker: answer here, as the worker would have
+        else:  # timeout, dead worker or a garbled answer: answer here, as the worker would have
+            if type(ans) is not Execution:
+                ans = failed(ErrorCode.HARNESS_ERROR, f"garbled answer from the sandbox worker: {ans!r:.60}")
             parsed = parse_line(number, raw, check_target=False)
             text.append(finish(number, parsed, lambda ans=ans: (ans.ok, ans.error, ans.message, ans.cells)).encode())
     return b"\n".join(text) + b"\n"

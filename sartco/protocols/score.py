@@ -13,6 +13,8 @@ import json
 import sys
 from pathlib import Path
 
+from sartco.clem.outcomes import HarnessFault
+from sartco.clem.paper import check_turns
 from sartco.errors import UserError
 from sartco.paper.vocabulary import PROTOCOL, published_test_files
 
@@ -78,6 +80,10 @@ def score_paper(episode: dict, responses: list[str]) -> dict:
     from sartco.paper.scoring import score_dialogue
 
     score = score_dialogue(responses, episode)
+    try:
+        check_turns(score)
+    except HarnessFault as fault:
+        raise LineError(f"harness_error: {fault.reason}") from None
     return {"id": episode["id"], "protocol": PROTOCOL, **{k: episode[k] for k in KEY_FIELDS},
             "cell": episode["cell"], **score.to_json()}
 
@@ -92,7 +98,10 @@ def score_ours(episode: dict, responses: list[str]) -> dict:
     turns = instance["turns"]
     if len(responses) > len(turns):
         raise LineError(f"{len(responses)} responses for {len(turns)} turn(s)")
-    record = build_answers(instance, responses + [""] * (len(turns) - len(responses)))
+    try:
+        record = build_answers(instance, responses + [""] * (len(turns) - len(responses)))
+    except HarnessFault as fault:  # the sandbox failed, not the answer: no score
+        raise LineError(f"harness_error: {fault.reason}") from None
     aborted = record.error == ErrorCode.PARSE_ERROR  # an answer without code: nothing was executed
     gold = instance["gold_code"]
     em = 0 if aborted else int(exact_match(record.builder_code, gold))

@@ -13,8 +13,12 @@ as Markdown and CSV:
                               and experiment: ES@1, ES@N, the share of first-attempt failures
                               repaired, mean attempts used (only when there are such episodes)
   dialogue.md / .csv / dialogue_rounds.svg   cobot_describe's dialogue scores (sartco.report.dialogue_table)
+  harness.md / harness.csv    episodes per model and game in which the harness failed, not the
+                              model (harness_error; sartco.report.harness_table)
 Numbers are percentages over all episodes of a cell; an aborted episode (no code found) counts
-as 0 for EM, CB and ES, and is listed as parse_error in the error tables. Feedback experiments
+as 0 for EM, CB and ES, and is listed as parse_error in the error tables. A harness_error episode
+is no measurement of the model: it is left out of every table but errors.md and harness.md, and
+the report then exits with status 3 (harness_table.HARNESS_STATUS; the tables are written). Feedback experiments
 and cobot_describe's dialogue modes are kept out of table3 and the ablations (they are not the
 paper's protocol).
 """
@@ -28,10 +32,10 @@ from pathlib import Path
 from sartco.errors import UserError
 from sartco.dataset import SOURCES as SOURCE_ORDER, TASKS as TASK_ORDER
 from sartco.episode import (ATTEMPTS, CELL_F1, CODEBLEU, ERROR_CATEGORY, ES_AT_1, EXACT_MATCH, EXECUTION_SUCCESS,
-                            MAX_ATTEMPTS)
+                            HARNESS_REASON, MAX_ATTEMPTS)
 from sartco.world import ErrorCode
 
-from . import completeness, dialogue_table, intervals, paper_table, passk
+from . import completeness, dialogue_table, harness_table, intervals, paper_table, passk
 from .files import load_json, markdown_table, number, percent, write_csv
 
 # clemgame entries whose cells are rows of another game's Table 3 (the published human- and
@@ -84,6 +88,7 @@ def collect(results: Path, games: list[str] | None = None) -> list[dict]:
             "em": number(scores.get(EXACT_MATCH)), "cb": number(scores.get(CODEBLEU)),
             "es": number(scores.get(EXECUTION_SUCCESS)), "f1": number(scores.get(CELL_F1)),
             "category": scores.get(ERROR_CATEGORY) or (str(ErrorCode.PARSE_ERROR) if scores.get("Aborted") else "unknown"),
+            "harness_reason": scores.get(HARNESS_REASON) or "",
             "max_attempts": attempts, "feedback_of": exp.get("feedback_of", ""), "mode": exp.get("mode") or "oneshot",
             "es1": number(scores.get(ES_AT_1, scores.get(EXECUTION_SUCCESS))),
             "attempts_used": number(scores.get(ATTEMPTS)),
@@ -214,9 +219,10 @@ def table3_markdown(rows: list[dict], title: str, keys: list[str]) -> str:
 def run(args: argparse.Namespace) -> int:
     if passk.samples_only(args.results):  # nothing but `sartco sample`'s runs
         return passk.write_alone(args.results, args.out)
-    episodes = collect(args.results, args.game)
-    found = completeness.check(args.results, args.game, {e["game"] for e in episodes})
-    found.annotate(episodes)
+    everything = collect(args.results, args.game)
+    found = completeness.check(args.results, args.game, {e["game"] for e in everything})
+    found.annotate(everything)
+    episodes = [e for e in everything if not harness_table.is_harness(e)]  # the model's measurements
     out: Path = args.out
     out.mkdir(parents=True, exist_ok=True)
     written = []
@@ -254,13 +260,16 @@ def run(args: argparse.Namespace) -> int:
         written += ["repair.md", "repair.csv"]
     written += dialogue_table.write(episodes, out)  # cobot_describe's dialogue modes
     written += passk.write(args.results, out)  # pass@k of `sartco sample`'s runs (RESULTS/samples/s1..sN)
-    header, rows = errors(episodes)
+    header, rows = errors(everything)
     write_csv(out / "errors.csv", header, rows)
     md = "# Error categories (episodes per category)\n\n" + markdown_table(header, [[r[h] for h in header] for r in rows])
     (out / "errors.md").write_text(md, encoding="utf-8")
     written += ["errors.md", "errors.csv"]
+    files, faults = harness_table.write(everything, out)
+    written += files
     if paper_md:
         print(paper_md)
     written += completeness.write(found, out)
-    print(f"sartco report: {len(episodes)} episodes -> " + ", ".join(str(out / w) for w in written))
-    return completeness.finish(found, out, written)
+    print(f"sartco report: {len(everything)} episodes -> " + ", ".join(str(out / w) for w in written))
+    status = completeness.finish(found, out, written)
+    return status or (harness_table.HARNESS_STATUS if faults else 0)

@@ -35,10 +35,13 @@ class ErrorCode(StrEnum):
     RESOURCE_LIMIT = "resource_limit"
     # the game's own: an answer in which no code was found
     PARSE_ERROR = "parse_error"
+    # the harness's own fault, never the model's: the sandbox could not run the program or gave
+    # no usable answer, or the game master or scorer failed (the episode counts as not played)
+    HARNESS_ERROR = "harness_error"
 
     @property
     def family(self) -> str:
-        """parse | python | world | sandbox | mismatch: the kind of failure, for reports and
+        """parse | python | world | sandbox | mismatch | harness: the kind of failure, for reports and
         transcripts."""
         return _FAMILIES[self]
 
@@ -55,7 +58,7 @@ WORLD_CODES = frozenset({
 SANDBOX_CODES = frozenset({ErrorCode.FORBIDDEN, ErrorCode.TIMEOUT, ErrorCode.RESOURCE_LIMIT})
 MISMATCH_CODES = frozenset(c for c in ErrorCode if c.value.startswith("mismatch_"))
 _FAMILIES = {
-    ErrorCode.PARSE_ERROR: "parse", **dict.fromkeys(PYTHON_CODES, "python"), **dict.fromkeys(WORLD_CODES, "world"),
+    ErrorCode.PARSE_ERROR: "parse", ErrorCode.HARNESS_ERROR: "harness", **dict.fromkeys(PYTHON_CODES, "python"), **dict.fromkeys(WORLD_CODES, "world"),
     **dict.fromkeys(SANDBOX_CODES, "sandbox"), **dict.fromkeys(MISMATCH_CODES, "mismatch"),
 }
 SUCCESS_CATEGORY = "success"  # the category recorded for a build that equals its target

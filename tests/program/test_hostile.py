@@ -76,6 +76,15 @@ HOSTILE = [
     ("try swallows refusal", "try:\n    n = (5).count(1)\nexcept Exception:\n    pass", F, None),
     ("try swallows length", "try:\n    x = [0] * 10**9\nexcept Exception:\n    pass", R, None),
     ("finally swallows length", "def f():\n    try:\n        x = 'a' * 10**9\n    finally:\n        return 1\nf()", R, None),
+    # issue 21: a RecursionError swallowed by `finally: return` (or break/continue) ended ok
+    ("finally return swallows recursion", "def f():\n    return f()\ndef g():\n    try:\n        f()\n    finally:\n"
+     "        return\ng()", R, None),
+    ("finally break swallows recursion", "def f():\n    return f()\nwhile True:\n    try:\n        f()\n    finally:\n"
+     "        break", R, None),
+    ("finally continue swallows recursion", "def f():\n    return f()\nfor i in range(2):\n    try:\n        f()\n"
+     "    finally:\n        continue", R, None),
+    ("finally return at every depth", "def f():\n    try:\n        return f()\n    finally:\n        return 1\nf()",
+     R, None),
     ("exception traceback", "try:\n    1 / 0\nexcept ZeroDivisionError as e:\n    t = e.__traceback__", F, None),
     ("exception method", "try:\n    1 / 0\nexcept ZeroDivisionError as e:\n    t = e.with_traceback(None)", F, None),
     ("with", "with open(CANARY) as f:\n    pass", F, None),

@@ -48,11 +48,11 @@ def test_internal_compile_error_is_not_cached(monkeypatch):
 
     monkeypatch.setattr(runtime, "prepare", broken)
     result = runtime.compile_program("x = 1", L)
-    assert result[1] == E.RUNTIME_ERROR and "internal error" in result[2]
+    assert result[1] == E.HARNESS_ERROR and "internal error" in result[2]
     assert "x = 1" not in runtime._cache and runtime.SPOILED
 
 
-@pytest.mark.parametrize("failure,code", [(MemoryError, E.RESOURCE_LIMIT), (RuntimeError, E.RUNTIME_ERROR)])
+@pytest.mark.parametrize("failure,code", [(MemoryError, E.RESOURCE_LIMIT), (RuntimeError, E.HARNESS_ERROR)])
 def test_failure_while_reading_the_board_is_never_ok(monkeypatch, failure, code):
     def cells(self):
         raise failure
@@ -97,7 +97,9 @@ def test_clean():
 
 @pytest.mark.parametrize("status,code,word", [
     (-11, E.RUNTIME_ERROR, "SIGSEGV"), (-6, E.RUNTIME_ERROR, "SIGABRT"), (-9, E.RESOURCE_LIMIT, "SIGKILL"),
-    (3, E.RESOURCE_LIMIT, "memory"), (1, E.RUNTIME_ERROR, "status 1"),
+    (3, E.RESOURCE_LIMIT, "memory"),
+    # the worker's own exit, not a kill while the program ran: the harness's fault (issue 21)
+    (1, E.HARNESS_ERROR, "status 1"), (0, E.HARNESS_ERROR, "status 0"),
 ])
 def test_a_dead_worker_is_named(status, code, word):
     ex = driver._died(status)

@@ -6,7 +6,7 @@ from sartco.world import (MISMATCH_CODES, PYTHON_CODES, SANDBOX_CODES, SUCCESS_C
                           category_family)
 
 FAMILIES = {"python": PYTHON_CODES, "world": WORLD_CODES, "sandbox": SANDBOX_CODES, "mismatch": MISMATCH_CODES,
-            "parse": {ErrorCode.PARSE_ERROR}}
+            "parse": {ErrorCode.PARSE_ERROR}, "harness": {ErrorCode.HARNESS_ERROR}}
 
 
 @pytest.mark.parametrize("code", list(ErrorCode))
@@ -17,6 +17,7 @@ def test_every_code_has_exactly_one_family(code):
 @pytest.mark.parametrize("category, family", [
     (None, "success"), ("", "success"), (SUCCESS_CATEGORY, "success"), ("syntax_error", "python"),
     ("bridge_placement", "world"), ("timeout", "sandbox"), ("mismatch_color", "mismatch"), ("parse_error", "parse"),
+    ("harness_error", "harness"),
 ])
 def test_a_recorded_category_reads_back_as_its_family(category, family):
     assert category_family(category) == family
