@@ -8,7 +8,7 @@ together into one paragraph. So our game masters (the `MarkdownTranscript` mixin
 log every message in `display` form: fenced code as a code block, everything else as
 preformatted text that keeps its line breaks and indentation and wraps long lines; all text is
 HTML-escaped (model output is hostile input: no markup of a model reaches the reader's browser).
-The exact texts stay in each message action under `text` and in the players' requests files
+The texts themselves stay in each message action under `text` and in the players' requests files
 (player_N.requests.json); the models never see the display form.
 
 The mixin is also where a player's answer enters the game master (`step`): it is escaped there
@@ -69,7 +69,7 @@ def display(text: str) -> str:
 class MarkdownTranscript:
     """Mixin for a DialogueGameMaster (put it first among the bases): the transcript shows every
     message of the game in `display` form (the action's `content`, what clemcore renders), and the
-    action keeps the exact text under `text` (RAW_KEY) for anyone who reads interactions.json.
+    action keeps the text under `text` (RAW_KEY) for anyone who reads interactions.json.
     clemcore's `step` logs each exchange through these two methods (the same actions as clemcore's
     own, plus `text`); what the players receive and answer is unchanged."""
 
@@ -89,6 +89,7 @@ class MarkdownTranscript:
     def log_player_to_gm(self, response, player):
         action = {"type": "get message", "content": display(response), "label": "response", RAW_KEY: response}
         exact = getattr(self, "_exact_answer", response)
-        if isinstance(exact, str) and exact_json(exact):
-            action[EXACT_KEY] = exact_json(exact)
+        exact = exact_json(exact) if isinstance(exact, str) else None
+        if exact:
+            action[EXACT_KEY] = exact
         self.log_event(from_=player.name, to="GM", action=action)
