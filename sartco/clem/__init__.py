@@ -1,7 +1,8 @@
 """Shared clemcore glue for the SARTCo games (installed, because clemcore unloads modules that
 live inside a game folder). Reuse these from any game whose player writes code:
 
-- parsing.parse_code / ParseError      find the code in an answer (no code -> aborted)
+- parsing.parse_code / ParseError      find the code in an answer (no code -> aborted);
+                                       answer_lines: what one line is (labels, fences, Python)
 - outcomes                             the one ErrorCode -> clemcore outcome/logging translation
 - harness.HarnessGuard / harness_scores   harness faults (sandbox, master, scorer) -> harness_error,
                                        aborted, never the model's error

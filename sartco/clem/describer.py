@@ -18,6 +18,7 @@ import re
 from sartco.episode import (DESCRIBER_ANSWERED, INSTRUCTION_CHARACTERS, INSTRUCTION_KEY, INSTRUCTION_WORDS,
                             OBJECT_NAMED)
 
+from .answer_lines import in_fence
 from .parsing import ParseError
 from .players import AnswerSource, SourcedPlayer, terminal_answer
 from .scoring import NAN, BuildScorer
@@ -48,10 +49,11 @@ _END = re.compile(r"^\s*(?:#+\s*)?(?:\*\*|__)?\s*(?:output|function|usage|code|a
 
 
 def text_under(text: str | None, pattern: re.Pattern) -> str | None:
-    """The text after the first line that matches `pattern` (a `label`), up to another answer
+    """The text after the first line outside code fences that matches `pattern` (a `label`), up to another answer
     label or a code fence, blank lines squeezed; None when no line matches; "" when nothing follows."""
     lines = str(text or "").replace("\r\n", "\n").replace("\r", "\n").split("\n")
-    start = next((i for i, line in enumerate(lines) if pattern.match(line)), None)
+    fenced = in_fence(lines)  # a label inside a fence is part of the code there ("# Question: ..." a comment)
+    start = next((i for i, line in enumerate(lines) if not fenced[i] and pattern.match(line)), None)
     if start is None:
         return None
     body = [pattern.match(lines[start]).group("rest")]

@@ -5,7 +5,7 @@ The authors' game sends each turn's message as a user message (the whole history
 aborts: their scorer reads every answer after the dialogue (sartco.paper.reading.read_answer)
 and scores each turn (sartco.paper.scoring.score_dialogue: EM, CB pass, ES with the "while"
 refusal). `finish_paper` does the same once the last answer is in, logs one GM->GM `paper_turn`
-event per turn (the reading and its scores) and the dialogue's scores under PAPER_KEY, and also
+event per turn (the reading and its scores; shown escaped, the code as code blocks) and the dialogue's scores under PAPER_KEY, and also
 records our own build of the whole answer (sartco.parsing on each answer, the turns joined, run
 once on a fresh board: ES, cell F1, error category; an answer without code is our parse_error,
 but the episode goes on). The episode succeeds when every turn's ES does.
@@ -25,6 +25,7 @@ from .benchmark import json_fields
 from .building import build_answers, log_build
 from .outcomes import HarnessFault, set_share_outcome
 from .scoring import BuildScorer
+from .transcript import code_block, text_block
 
 PAPER_EVENT = "paper_turn"     # one GM->GM event per turn: what the authors' scorer read and scored
 # what cobot_instruct's master and scorer read from a paper episode (checked before clem run plays)
@@ -64,6 +65,13 @@ def instance_fields(episode: dict) -> PaperProtocolEpisode:
             "given_code": episode["given_function"], "gold_code": gold_code(episode)}
 
 
+def shown(verdict: str, reading: dict[str, str]) -> str:
+    """A paper_turn event as the transcript shows it (display form, HTML-escaped): the verdict,
+    then each value the authors' scorer read as a code block that keeps its line breaks."""
+    parts = [text_block(verdict)]
+    for key, text in reading.items():
+        parts += [text_block(f"{key}:"), code_block(text) if text.strip() else text_block("(nothing)")]
+    return "\n\n".join(parts)
 
 
 def finish_paper(game_master, instance: dict, answers: list[str]) -> None:
@@ -80,9 +88,8 @@ def finish_paper(game_master, instance: dict, answers: list[str]) -> None:
         turns.append(entry)
         verdict = " ".join(f"{name.split()[1]} {int(entry[key])}" for key, name in PAPER_SCORES.items())
         why = f" ({turn.category}: {turn.message})" if turn.category else ""
-        shown = "\n".join(f"{key}:\n{text}" for key, text in reading.items())
         game_master.log_event("GM", "GM", {"type": PAPER_EVENT, "turn": k, "scores": entry,
-                                           "content": f"paper protocol, turn {k + 1}: {verdict}{why}\n\n{shown}"})
+                                           "content": shown(f"paper protocol, turn {k + 1}: {verdict}{why}", reading)})
     game_master.log_key(PAPER_KEY, {"em": score.em, "cb": score.cb, "es": score.es, "turns": turns})
     log_build(game_master, build_answers(instance, answers))
     set_share_outcome(game_master.state, score.es)

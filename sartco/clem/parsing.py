@@ -26,6 +26,9 @@ from clemcore.clemgame.errors import ParseError as _ClemParseError
 
 from sartco.world import ErrorCode
 
+from .answer_lines import (FENCE, LABEL, INLINE, KEYWORD_LINE, PYTHON_TAGS, STATEMENT_LINE, TAIL, code_lines,
+                           is_code_line, label_at)
+
 
 class ParseError(_ClemParseError):
     """No code in the answer. A clemcore ParseError, so DialogueGameMaster.step counts it as a
@@ -37,95 +40,6 @@ class ParseError(_ClemParseError):
         super().__init__(reason=reason, response=response, key=ErrorCode.PARSE_ERROR.value)
 
 
-# "Output:", "**Function:**", "### Usage:", "<Editor>:" ... (the rest of the line may hold code)
-_LABEL = re.compile(
-    r"^\s*(?:#+\s*)?(?:\*\*|__)?\s*(?P<label>output|function|usage|code|answer|python code|python|editor|<editor>)"
-    r"\s*(?:\*\*|__)?\s*:\s*(?:\*\*|__)?(?P<rest>.*)$",
-    re.IGNORECASE,
-)
-# the in-context pattern that small models repeat after their answer
-_TAIL = re.compile(r"^\s*(?:#+\s*)?(?:\*\*|__)?\s*(?:instructions?|<programmer>|programmer|input)\s*(?:\*\*|__)?\s*(?::|$)",
-                   re.IGNORECASE)
-_FENCE = re.compile(r"^\s*(`{3,}|~{3,})\s*([\w+-]*)\s*$")
-_PYTHON_TAGS = {"python", "python3", "py", "py3"}
-_INLINE = re.compile(r"(?<!`)`([^`\n]+)`(?!`)")  # `code` in a line of prose
-
-_KEYWORD_LINE = re.compile(
-    r"""^\s*(?:
-        def\s+\w+\s*\(.*\)\s*(?:->.*)?:\s*(?:\#.*)?$
-      | class\s+\w+.*:\s*$
-      | for\s+.+\s+in\s+.+:\s*(?:\#.*)?$
-      | (?:if|elif|while|with)\s+.+:\s*(?:\#.*)?$
-      | (?:else|try|finally)\s*:\s*(?:\#.*)?$
-      | except\b.*:\s*$
-      | return\b.*
-      | (?:pass|break|continue)\s*(?:\#.*)?$
-      | (?:import|from)\s+[\w.]+.*
-      | (?:raise|assert|del|global|nonlocal)\b.*
-    )""",
-    re.VERBOSE,
-)
-# a call or an assignment: put(board, ...), wn(board, ...), board = init_board(8, 8), x += 1
-_STATEMENT_LINE = re.compile(
-    r"^\s*[A-Za-z_][\w.]*(?:\[[^\]]*\])?\s*(?:\(.*|(?:[-+*/%]|//)?=(?!=)\s*\S.*|,\s*[A-Za-z_][\w.]*\s*=\s*\S.*)$")
-_COMMENT_LINE = re.compile(r"^\s*#")
-
-
-def _balance(line: str) -> int:
-    """How many brackets this line leaves open (strings are ignored roughly)."""
-    line = re.sub(r"'[^'\\]*(?:\\.[^'\\]*)*'|\"[^\"\\]*(?:\\.[^\"\\]*)*\"", "", line)
-    line = line.split("#", 1)[0]
-    return sum(line.count(c) for c in "([{") - sum(line.count(c) for c in ")]}")
-
-
-def _looks_like_prose(line: str) -> bool:
-    """A sentence that happens to start like a call: "Place (carefully) a red washer." """
-    s = line.strip()
-    words = re.findall(r"[A-Za-z]+", s)
-    return s.endswith(".") and not s.endswith(")") and len(words) > 6 and "board" not in s
-
-
-def _code_lines(lines: list[str]) -> list[str]:
-    """Keep the lines that are Python: statements, their indented bodies, continuation lines of
-    open brackets, and comments next to code. Prose lines are dropped."""
-    kept: list[str] = []
-    in_code = False      # the previous non-blank line was kept as code
-    block_open = False   # a kept line opened a block (ends with ":"): indented lines below are its body
-    open_brackets = 0    # brackets left open by kept lines: the next lines continue the statement
-    comments: list[str] = []  # comment lines waiting for the code they precede
-    for line in lines:
-        if not in_code and _COMMENT_LINE.match(line):
-            comments.append(line.rstrip())
-            continue
-        if not line.strip():
-            if in_code:
-                kept.append("")
-            continue
-        indent = len(line) - len(line.lstrip())
-        is_code = (
-            open_brackets > 0
-            or bool(_KEYWORD_LINE.match(line))
-            or (bool(_STATEMENT_LINE.match(line)) and not _looks_like_prose(line))
-            or (in_code and block_open and indent > 0)
-            or (bool(_COMMENT_LINE.match(line)) and (in_code or indent > 0))
-        )
-        if is_code:
-            kept.extend(comments)
-            comments = []
-            kept.append(line.rstrip())
-            open_brackets = max(0, open_brackets + _balance(line))
-            if line.split("#", 1)[0].rstrip().endswith(":"):
-                block_open = True
-            in_code = True
-        else:
-            in_code = block_open = False
-            open_brackets = 0
-            comments = []
-    while kept and not kept[-1].strip():
-        kept.pop()
-    return kept
-
-
 def _cut_tail(lines: list[str]) -> list[str]:
     """Drop everything from the first repeated "Instruction ..." line that follows code; an
     echoed instruction before any code is dropped on its own."""
@@ -133,16 +47,16 @@ def _cut_tail(lines: list[str]) -> list[str]:
     seen_code = False
     in_fence = False
     for line in lines:
-        if _FENCE.match(line):
+        if FENCE.match(line):
             in_fence = not in_fence
             seen_code = True
             out.append(line)
             continue
-        if not in_fence and _TAIL.match(line):
+        if not in_fence and TAIL.match(line):
             if seen_code:
                 break
             continue
-        if in_fence or _LABEL.match(line) or _KEYWORD_LINE.match(line) or _STATEMENT_LINE.match(line):
+        if in_fence or LABEL.match(line) or KEYWORD_LINE.match(line) or STATEMENT_LINE.match(line):
             seen_code = True
         out.append(line)
     return out
@@ -156,7 +70,7 @@ def _split_fences(lines: list[str]) -> tuple[list[tuple[str, list[str]]], list[s
     current: list[str] | None = None
     tag = ""
     for line in lines:
-        m = _FENCE.match(line)
+        m = FENCE.match(line)
         if m:
             if current is None:
                 current, tag = [], m.group(2).lower()
@@ -173,14 +87,14 @@ def _split_fences(lines: list[str]) -> tuple[list[tuple[str, list[str]]], list[s
 def _block_code(tag: str, block: list[str]) -> str:
     """The code of one fenced block: "" for a block tagged with another language than Python, or
     an untagged block with nothing that looks like Python (a grid, the expected output)."""
-    if tag and tag not in _PYTHON_TAGS:
+    if tag and tag not in PYTHON_TAGS:
         return ""
     # a label inside a fence ("Output:\nput(...)"): keep what follows it
-    labelled = _labelled_sections(block)
+    labelled = _labelled_sections(block, fenced=True)
     code = _clean([ln for sec in labelled for ln in sec] if labelled else block)
     if tag or not code:
         return code
-    looks = _clean(_code_lines(code.split("\n")))
+    looks = _clean(code_lines(code.split("\n")))
     if not looks:
         return ""
     try:
@@ -221,17 +135,23 @@ def _usage_calls(fenced: str, outside: str) -> list[str]:
     return [text for node, text in statements if usage(node)]
 
 
-def _labelled_sections(lines: list[str]) -> list[list[str]] | None:
-    """The text after each label (the label line's remainder, then the following lines)."""
+def _labelled_sections(lines: list[str], *, fenced: bool = False) -> list[list[str]] | None:
+    """The text after each label (the label line's remainder, then the following lines). A `#`
+    line inside a fence or right after code is a comment (answer_lines.label_at); inside a fence
+    a label's remainder is kept only if it is code ("Code: build bn" is prose)."""
     sections: list[list[str]] = []
     current: list[str] | None = None
+    after_code = False
     for line in lines:
-        m = _LABEL.match(line)
+        m = label_at(line, fenced=fenced, after_code=after_code)
+        if line.strip():
+            after_code = is_code_line(line)
         if m:
             current = []
             sections.append(current)
-            if m.group("rest").strip():
-                current.append(m.group("rest").strip())
+            rest = m.group("rest").strip()
+            if rest and (not fenced or is_code_line(rest)):
+                current.append(rest)
             continue
         if current is not None:
             current.append(line)
@@ -243,10 +163,10 @@ def _inline_code(lines: list[str]) -> list[str]:
     those statements, one per line, after the line's label if it has one; other lines stay."""
     out = []
     for line in lines:
-        label = _LABEL.match(line)
+        label = LABEL.match(line)
         head, rest = (line[:label.start("rest")], label.group("rest")) if label else ("", line)
-        spans = [span.strip() for span in _INLINE.findall(rest)]
-        code = [span for span in spans if _KEYWORD_LINE.match(span) or _STATEMENT_LINE.match(span)]
+        spans = [span.strip() for span in INLINE.findall(rest)]
+        code = [span for span in spans if KEYWORD_LINE.match(span) or STATEMENT_LINE.match(span)]
         if not code:
             out.append(line)
         elif head.strip():
@@ -263,7 +183,7 @@ def _unfenced_code(lines: list[str]) -> str:
     sections = _labelled_sections(lines)
     parts = []
     for chunk in sections if sections is not None else [lines]:
-        code = _clean(_code_lines(textwrap.dedent("\n".join(chunk)).split("\n")))
+        code = _clean(code_lines(textwrap.dedent("\n".join(chunk)).split("\n")))
         if code:
             parts.append(code)
     return "\n".join(parts)

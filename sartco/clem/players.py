@@ -14,6 +14,8 @@ from typing import Protocol
 
 from clemcore.clemgame import Player
 
+from sartco.text import escape, escape_all
+
 RULEBASED = "rulebased"  # the model name of the rule-based follower (sartco.clem.rulebased)
 
 
@@ -38,6 +40,13 @@ class SourcedPlayer(Player):
     def _custom_response(self, context: dict) -> str:
         self.turn += 1
         return self.answers.answer(self.turn - 1)
+
+    def perceive_response(self, response: str, *, log_event=True, memorize=True, metadata=None):
+        """clemcore's, with the answer and its call record escaped (sartco.text) before the
+        player logs or memorizes them: player_N.requests.json stays strict UTF-8. The game
+        master escapes the answer it reads the same way (sartco.clem.transcript)."""
+        return super().perceive_response(escape(response) if isinstance(response, str) else response,
+                                         log_event=log_event, memorize=memorize, metadata=escape_all(metadata))
 
 
 class Builder(SourcedPlayer):

@@ -8,8 +8,14 @@ together into one paragraph. So our game masters (the `MarkdownTranscript` mixin
 log every message in `display` form: fenced code as a code block, everything else as
 preformatted text that keeps its line breaks and indentation and wraps long lines; all text is
 HTML-escaped (model output is hostile input: no markup of a model reaches the reader's browser).
-The exact texts stay in each message action under `text` and in the players' requests files
-(player_N.requests.json); the models never see the display form. Board pictures are `<img>` tags with paths relative to the episode folder
+The texts themselves stay in each message action under `text` and in the players' requests files
+(player_N.requests.json); the models never see the display form.
+
+The mixin is also where a player's answer enters the game master (`step`): it is escaped there
+once (sartco.text.escape: lone surrogates, control characters, bidi overrides as visible
+escapes), so the parser, the sandbox, every record and every transcript see the same safe text;
+when escaping changed it, the answer's action keeps the exact text as ASCII JSON under
+`exact_json`. (The player escapes its own record the same way: sartco.clem.players.) Board pictures are `<img>` tags with paths relative to the episode folder
 (`picture`), so a copied results folder still shows them.
 """
 from __future__ import annotations
@@ -18,8 +24,10 @@ import html
 import re
 
 from sartco.episode import MARKDOWN_KEY  # the interactions.json key that switches clemcore's transcript to Markdown
+from sartco.text import escape, exact_json
 
-RAW_KEY = "text"           # a message action's exact text (its `content` is the display form)
+RAW_KEY = "text"           # a message action's text (its `content` is the display form)
+EXACT_KEY = "exact_json"   # an answer's exact text as ASCII JSON, when escaping changed it
 FENCE = re.compile(r"^[ \t]*```[^\n]*\n(.*?)^[ \t]*```[ \t]*$", re.M | re.S)  # a closed fenced block
 TEXT_STYLE = "white-space: pre-wrap; margin: 0"
 CODE_STYLE = ("white-space: pre; overflow-x: auto; margin: 4px 0; padding: 6px; background: #f6f8fa; "
@@ -61,9 +69,14 @@ def display(text: str) -> str:
 class MarkdownTranscript:
     """Mixin for a DialogueGameMaster (put it first among the bases): the transcript shows every
     message of the game in `display` form (the action's `content`, what clemcore renders), and the
-    action keeps the exact text under `text` (RAW_KEY) for anyone who reads interactions.json.
+    action keeps the text under `text` (RAW_KEY) for anyone who reads interactions.json.
     clemcore's `step` logs each exchange through these two methods (the same actions as clemcore's
     own, plus `text`); what the players receive and answer is unchanged."""
+
+    def step(self, response):
+        """clemcore's step with the answer escaped: the one entry of every answer, sequential or batched."""
+        self._exact_answer = response
+        return super().step(escape(response) if isinstance(response, str) else response)
 
     def log_gm_to_player(self, context, player):
         self.log_key(MARKDOWN_KEY, True)  # before the first message; the same value every time
@@ -74,5 +87,9 @@ class MarkdownTranscript:
         self.log_event(from_="GM", to=player.name, action=action)
 
     def log_player_to_gm(self, response, player):
-        self.log_event(from_=player.name, to="GM", action={"type": "get message", "content": display(response),
-                                                           "label": "response", RAW_KEY: response})
+        action = {"type": "get message", "content": display(response), "label": "response", RAW_KEY: response}
+        exact = getattr(self, "_exact_answer", response)
+        exact = exact_json(exact) if isinstance(exact, str) else None
+        if exact:
+            action[EXACT_KEY] = exact
+        self.log_event(from_=player.name, to="GM", action=action)

@@ -39,8 +39,8 @@ a garbled or missing answer, a worker's own exit, an internal error) is `harness
 
 No program spoils another: a worker retires after a budget stop, a MemoryError, an internal
 error, or a program after which it holds 64 MB more than at its start, and the next program
-runs in a fresh one; verdicts are cached only when they depend on the source alone; messages are cleaned of control characters
-and lone surrogates before anything writes them; workers die with their parent process.
+runs in a fresh one; verdicts are cached only when they depend on the source alone; messages escape control characters,
+lone surrogates and bidi overrides (sartco.text) before anything writes them; workers die with their parent process.
 
 
 Modules (each one's docstring has the details):

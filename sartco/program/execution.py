@@ -3,9 +3,9 @@ slotted and JSON-friendly; and the text rules every answer of the sandbox obeys 
 not_a_str). The comparison with a target is compare.py's."""
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass, field
 
+from sartco.text import one_line
 from sartco.world import ErrorCode
 
 # how a program's names are bound (namespaces.py): MODULE, a script's module namespace (our
@@ -62,18 +62,5 @@ def not_a_str(program) -> str:
     return f"the program must be a str, not {type(program).__name__}"
 
 
-# control characters, lone surrogates and the bidirectional overrides: none of them may reach
-# JSON (a lone surrogate is not Unicode), clemcore's files or a transcript
-_UNSAFE = re.compile("[\x00-\x1f\x7f-\x9f\ud800-\udfff\u202a-\u202e\u2066-\u2069]")
-
-
-def _replacement(match) -> str:
-    return " " if match.group() in "\t\n\r" else "\ufffd"
-
-
-def clean(text: str) -> str:
-    """`text` safe to write anywhere: tabs and line breaks become spaces, other control
-    characters, lone surrogates and bidi overrides become U+FFFD."""
-    if text.isascii() and text.isprintable():
-        return text
-    return _UNSAFE.sub(_replacement, text)
+# every message the sandbox writes is one line with model text escaped (sartco.text's one rule)
+clean = one_line

@@ -36,6 +36,7 @@ from typing import Iterable
 
 from sartco.errors import UserError
 from sartco.paper.vocabulary import OUR_PROTOCOL, PROTOCOL, PROTOCOLS
+from sartco.text import escape_all
 
 ROOT = Path(__file__).resolve().parents[2]
 INSTANCES_DIR = ROOT / "games" / "cobot_instruct" / "in"
@@ -96,7 +97,7 @@ def write_lines(items: Iterable[dict]) -> int:
     """Write JSON lines to stdout; a reader that stops early (`| head`) ends the output quietly."""
     try:
         for item in items:
-            sys.stdout.write(json.dumps(item, ensure_ascii=False) + "\n")
+            sys.stdout.write(json.dumps(escape_all(item), ensure_ascii=False) + "\n")  # strict UTF-8
         sys.stdout.flush()
     except BrokenPipeError:
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # no second error at exit

@@ -17,6 +17,7 @@ from sartco.clem.outcomes import HarnessFault
 from sartco.clem.paper import check_turns
 from sartco.errors import UserError
 from sartco.paper.vocabulary import PROTOCOL, published_test_files
+from sartco.text import escape
 
 from . import add_common, our_episodes, paper_episodes, write_lines
 
@@ -55,7 +56,7 @@ def parse_line(text: str) -> dict:
     responses = item.get("responses")
     if not isinstance(responses, list) or not all(isinstance(r, str) for r in responses):
         raise LineError('"responses" must be a list of strings, one raw answer per turn', eid)
-    return {"id": eid, "responses": responses}
+    return {"id": eid, "responses": [escape(r) for r in responses]}  # escaped as the game master escapes answers
 
 
 def read_lines(inputs: list[Path]) -> list[tuple[str, str]]:

@@ -12,7 +12,7 @@ ROOT = Path(__file__).resolve().parents[2]
 
 # lowest first; a module may import modules of its own rank's package and of lower ranks
 LAYERS = [
-    ("base", ["sartco.errors", "sartco.dataset", "sartco.episode"]),
+    ("base", ["sartco.errors", "sartco.dataset", "sartco.episode", "sartco.text"]),
     ("world", ["sartco.world"]),
     ("program", ["sartco.program"]),
     ("data", ["sartco.instances", "sartco.follower"]),

@@ -27,6 +27,9 @@ def test_parsers():
     oneshot = settings_of({"name": "x"})
     with pytest.raises(ParseError):  # no questions in oneshot: a question is an answer without code
         parse_builder_answer("Question: which row?", oneshot, 0)
+    # a label inside a code fence is part of the code: a comment is not a question
+    code = "```python\n# Question: which row? the first\nput(board, 'nut', 'red', 0, 0)\n```"
+    assert parse_builder_answer(code, clarify, 0) == ("code", "# Question: which row? the first\nput(board, 'nut', 'red', 0, 0)")
     assert parse_review("Done.") is None and parse_review("**Done**") is None
     assert parse_review("Correction: Place a red nut in the 1st row, 1st column.").startswith("Place a red nut")
     for bad in ("", "Looks good to me", "Correction:"):

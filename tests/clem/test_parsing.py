@@ -113,3 +113,35 @@ def test_answer_styles(answer, expected):
 def test_blocks_without_python_are_no_code(answer):
     with pytest.raises(ParseError):
         parse_code(answer)
+
+
+# Comments inside a fence are code comments; labels are read outside fences or on a line of prose
+# (issue 21: a `# Usage:` comment dropped the function above it, a correct answer scored name_error;
+# `# Code: build bn` turned "build bn" into code).
+BN = "def bn(board, colors, x, y):\n    put(board, 'bridge-v', colors[0], x, y)\n    put(board, 'nut', colors[1], x, y)"
+BN_CALL = "bn(board, ['green', 'red'], 4, 3)"
+COMMENTS = {
+    "usage comment in the fence": (f"```python\n{BN}\n\n# Usage:\n{BN_CALL}\n```", f"{BN}\n\n# Usage:\n{BN_CALL}"),
+    "code comment in the fence": (f"```python\n{BN}\n# Code: build bn\n{BN_CALL}\n```", f"{BN}\n# Code: build bn\n{BN_CALL}"),
+    "heading-like comment in the fence": (f"```python\n### Function:\n{BN}\n{BN_CALL}\n```", f"### Function:\n{BN}\n{BN_CALL}"),
+    "usage comment after unfenced code": (f"{BN}\n# Usage:\n{BN_CALL}", f"{BN}\n# Usage:\n{BN_CALL}"),
+    "prose label first in a fence still a label": (f"```\nOutput:\n{PUT}\n```", PUT),
+    "prose label with prose rest in a fence": (f"```python\nCode: build bn\n{BN_CALL}\n```", BN_CALL),
+    # outside fences a heading before code is a label; after code it reads as the comment it may be (same program)
+    "markdown heading labels outside fences": (f"### Function:\n{BN}\n### Usage:\n{BN_CALL}",
+                                               f"{BN}\n### Usage:\n{BN_CALL}"),
+    "markdown heading labels between prose": (f"### Function:\n{BN}\n\nThen:\n### Usage:\n{BN_CALL}",
+                                              f"{BN}\n{BN_CALL}"),
+}
+
+
+@pytest.mark.parametrize("answer, expected", COMMENTS.values(), ids=COMMENTS.keys())
+def test_comments_in_code_are_not_labels(answer, expected):
+    assert parse_code(answer) == expected
+
+
+def test_a_usage_comment_keeps_a_correct_answer_correct():
+    from sartco.program import execute
+    code = parse_code(f"```python\n{BN}\n\n# Usage:\n{BN_CALL}\n```")
+    result = execute(code)
+    assert result.ok and result.puts == 2, result.message

@@ -92,7 +92,9 @@ def test_messages_are_clean(program):
 
 def test_clean():
     assert clean("plain text: (1, 2)") == "plain text: (1, 2)"
-    assert clean("a\ud800b\tc\r\nd\x00e\u202ef é ✓") == "a\ufffdb c  d\ufffde\ufffdf é ✓"
+    # escaped, not dropped: each unsafe character is shown as its Python escape
+    assert clean("a\ud800b\tc\r\nd\x00e\u202ef é ✓") == "a\\ud800b c  d\\x00e\\u202ef é ✓"
+    assert clean(clean("a\ud800\x1b")) == clean("a\ud800\x1b")
 
 
 @pytest.mark.parametrize("status,code,word", [

@@ -142,3 +142,21 @@ def test_export_is_byte_identical_across_processes_and_hash_seeds():
                               capture_output=True, env=env, cwd=ROOT, check=True)
         outputs.append(done.stdout)
     assert outputs[0] == outputs[1] and outputs[0].count(b"\n") == 3 * 130
+
+
+def test_score_responses_with_odd_characters_is_strict_utf8_and_scores_as_clem_does():
+    """A lone surrogate or NUL in a response (or its id) gives one strict UTF-8 line each, and the
+    answer is read as the game master reads it (escaped: a comment stays a comment)."""
+    import subprocess
+    import sys
+    rep = our_instances()["rb_so_repetition_template"]["game_instances"][0]
+    rid = f"rb_so_repetition_template/{rep['board_id']}/repetition"
+    odd = "```python\n" + rep["gold_turns"][0] + "\n# \ud800 \x00 \u202e\n```"
+    requests = [{"id": rid, "responses": [odd]}, {"id": "nope/\ud800/x", "responses": ["\ud800"]}]
+    stdin = "".join(json.dumps(r) + "\n" for r in requests)  # ASCII JSON: the surrogates as \ud800 escapes
+    done = subprocess.run([sys.executable, "-m", "sartco", "score-responses", "--protocol", "sartco"],
+                          input=stdin.encode(), capture_output=True, cwd=ROOT)
+    assert done.returncode == 0, done.stderr.decode(errors="replace")[-500:]
+    out = [json.loads(line) for line in done.stdout.decode("utf-8", errors="strict").splitlines()]
+    assert out[0]["es"] == 1 and out[0]["category"] == "success"
+    assert "error" in out[1] and "\\ud800" in out[1]["id"]
