@@ -69,9 +69,9 @@ def check(board: Board, shape, color, x, y) -> int | None:
             _fail(E.SAME_SHAPE_STACKING, f"{shape} directly on a {shape} at ({x}, {y})")
         elif height >= 2 and anchor[-2][0] == shape:
             _fail(E.SAME_SHAPE_AT_ALTERNATE_LEVELS, f"{shape} two levels above a {shape} at ({x}, {y})")
-    if shape not in SHAPES:
+    if type(shape) is not str or shape not in SHAPES:  # exact str: a program's object may claim equality
         _fail(E.KEY_ERROR, f"unknown shape {shape!r:.40}; expected one of {', '.join(SHAPES)}")
-    if color not in COLORS:
+    if type(color) is not str or color not in COLORS:
         _fail(E.KEY_ERROR, f"unknown colour {color!r:.40}; expected one of {', '.join(COLORS)}")
     return second
 

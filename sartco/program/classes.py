@@ -1,0 +1,56 @@
+"""The program's own classes: `class` statements, built by BUILD_CLASS (the `__build_class__` of
+the sandbox's builtins, which every class statement calls) as instances of ProgramClass.
+
+A class body runs as plain Python runs it (its code is instrumented like any other: loops and
+method bodies count steps). Then the namespace is checked and the class made:
+- bases: the program's own classes, the allowed exception classes (`class Bad(ValueError)`) and
+  typing.NamedTuple (records.py); `object` is dropped by the check (nodes.py); no keywords
+  (`metaclass=...`), so no metaclass, `__init_subclass__`, `__prepare__` or `__mro_entries__`
+  of anything but ours ever runs;
+- names: the dunder methods a program may define are DEFINABLE (construction, representation,
+  comparison, containers, iteration, arithmetic); nothing that changes how Python itself treats
+  the object (`__getattribute__`, `__getattr__`, `__setattr__`, `__del__`, `__new__`,
+  `__init_subclass__`, `__set_name__`, `__get__`/`__set__`, `__reduce__`, `__deepcopy__`,
+  `__index__`, `__class_getitem__`, `__slots__`, ...). nodes.py refuses the others before running;
+  this check says it again for what reaches a class some other way.
+What a program may read and write on these objects is attributes.py's rule.
+"""
+from __future__ import annotations
+
+import builtins
+
+from .budget import Forbidden
+
+DEFINABLE = frozenset("""
+    __init__ __post_init__ __repr__ __str__ __eq__ __ne__ __lt__ __le__ __gt__ __ge__ __hash__
+    __len__ __iter__ __next__ __contains__ __getitem__ __setitem__ __delitem__ __bool__ __call__
+    __add__ __sub__ __mul__ __truediv__ __floordiv__ __mod__ __pow__ __neg__ __pos__ __abs__
+    __radd__ __rsub__ __rmul__ __rtruediv__ __rfloordiv__ __iadd__ __isub__ __imul__
+    """.split())
+EXCEPTIONS = frozenset(
+    "Exception BaseException ValueError TypeError KeyError IndexError ZeroDivisionError ArithmeticError "
+    "LookupError AttributeError RuntimeError StopIteration AssertionError NotImplementedError OverflowError "
+    "NameError UnboundLocalError".split()
+)
+EXCEPTION_TYPES = frozenset(getattr(builtins, name) for name in EXCEPTIONS)  # the bases a class may have
+COMPILER_NAMES = frozenset({"__module__", "__qualname__", "__annotations__", "__classcell__", "__doc__"})
+
+
+class ProgramClass(type):
+    """The type of every class a program defines (records.build_class makes them)."""
+
+    def __repr__(cls):
+        return f"<class '__main__.{type.__getattribute__(cls, '__qualname__')}'>"
+
+
+def is_program_object(obj) -> bool:
+    """An instance of a program's class, or such a class."""
+    return type(type(obj)) is ProgramClass or type(obj) is ProgramClass
+
+
+def make(name: str, bases: tuple, namespace: dict):
+    """A program class from a namespace whose names were checked (or are ours)."""
+    for key in namespace:
+        if key[:2] == "__" and key not in DEFINABLE and key not in COMPILER_NAMES and key != "__slots__":
+            raise Forbidden(f"class {name}: defining {key} is not allowed (it changes how Python treats the object)")
+    return ProgramClass(name, bases, namespace)
