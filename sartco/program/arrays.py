@@ -17,6 +17,7 @@ import operator
 
 from . import budget
 from .budget import too_long
+from .conversions import INT
 
 ARRAY_NAMES = frozenset({"shape", "ndim", "size", "T", "reshape", "flatten", "ravel", "tolist", "copy", "astype",
                          "sum", "min", "max", "any", "all", "mean", "dtype"})
@@ -156,7 +157,7 @@ def _cast(dtype):
         return _DTYPES[dtype]
     if dtype is float or dtype is bool or dtype is int:
         return dtype
-    if getattr(type(dtype), "real", None) is not None and dtype.real is int:  # the program's int (conversions)
+    if dtype is INT:  # the program's int
         return int
     raise TypeError(f"dtype {dtype!r:.40} is not available in the sandbox (int, float, bool)")
 

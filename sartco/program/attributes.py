@@ -21,6 +21,7 @@ internals: those names are never offered and no type the program can reach offer
 from __future__ import annotations
 
 import itertools
+import types
 
 from .arrays import ARRAY_NAMES, ndarray
 from .budget import Forbidden
@@ -32,13 +33,14 @@ from .modules import MEMBERS, Module
 
 TYPES = {  # types of the stand-ins and of the class machinery, with the names they offer
     property: frozenset({"setter", "getter", "deleter"}), SeededRandom: RANDOM_METHODS, ndarray: ARRAY_NAMES,
+    types.GeneratorType: frozenset({"send", "close"}),
 }
 UNBOUND = {  # built-in types and stand-in members a program may read a method of
     STR: (str, _STR), list: (list, _LIST), dict: (dict, _DICT | {"fromkeys"}), set: (set, _SET),
     frozenset: (frozenset, _FROZEN), tuple: (tuple, frozenset({"index", "count"})),
     itertools.chain: (itertools.chain, frozenset({"from_iterable"})),
 }
-RECORD_NAMES = frozenset({"_asdict", "_replace", "_fields", "_make", "_field_defaults"})
+RECORD_NAMES = frozenset({"_asdict", "_replace", "_fields", "_make", "_field_defaults", "args"})  # args: exceptions
 NAMES = METHODS.union(*MEMBERS.values(), *TYPES.values(), RECORD_NAMES, {"fromkeys", "from_iterable"})
 
 

@@ -206,8 +206,8 @@ def _w_attribute(n, wrapped, walk):
     if type(n.ctx) is not ast.Load:
         walk.stored.add(name)
         return _loc(ast.Subscript(_call("$fields", [n.value, key], n), key, n.ctx), n)
-    if name not in ATTRIBUTES and name not in walk.reads:
-        walk.reads[name] = n
+    if name not in ATTRIBUTES and name not in DEFINABLE and (name not in walk.reads or type(n.value) is ast.Name):
+        walk.reads[name] = n  # (a module's name as the owner makes the clearer message)
     return _call("$attr", [n.value, key], n)
 
 
