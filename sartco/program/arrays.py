@@ -41,28 +41,51 @@ def _kind(items) -> type:
     return int
 
 
-class ndarray:  # noqa: N801 - numpy's name
-    __slots__ = ("data", "shape")
+def _strides(shape: tuple) -> tuple:
+    return tuple(_count(shape[i + 1:]) for i in range(len(shape)))
 
-    def __init__(self, data: list, shape: tuple):
-        self.data, self.shape = data, shape
+
+class ndarray:  # noqa: N801 - numpy's name
+    """Items of `base` (a flat list) at offset + sum(index * stride): indexing by ints and
+    slices and `.T` give views of the same base, as numpy's basic indexing does."""
+
+    __slots__ = ("base", "shape", "offset", "strides", "kind")
+
+    def __init__(self, data: list, shape: tuple, offset: int = 0, strides: tuple | None = None):
+        self.base, self.shape, self.offset = data, shape, offset
+        self.strides = _strides(shape) if strides is None else strides
+        self.kind = None  # the item type assignments convert to, found at the first one
+
+    @property
+    def data(self) -> list:
+        """The items in order (the base itself when this array is all of it, in order)."""
+        if self.offset == 0 and self.strides == _strides(self.shape) and len(self.base) == _count(self.shape):
+            return self.base
+        return [self.base[p] for p in self.positions()]
+
+    def positions(self) -> list:
+        out = [self.offset]
+        for d, s in zip(self.shape, self.strides):
+            out = [p + i * s for p in out for i in range(d)]
+        return out
 
     ndim = property(lambda self: len(self.shape))
-    size = property(lambda self: len(self.data))
+    size = property(lambda self: _count(self.shape))
     dtype = property(lambda self: {float: "float64", bool: "bool"}.get(_kind(self.data), "int64"))
 
     @property
     def T(self):  # noqa: N802 - numpy's name
-        shape = self.shape[::-1]
-        return ndarray([self.data[_flat(i[::-1], self.shape)] for i in itertools.product(*map(range, shape))], shape)
+        return ndarray(self.base, self.shape[::-1], self.offset, self.strides[::-1])
 
     def tolist(self):
+        data = self.data
+
         def nest(start, dims):
             if not dims:
-                return self.data[start]
+                return data[start]
             step = _count(dims[1:])
             return [nest(start + i * step, dims[1:]) for i in range(dims[0])]
-        return nest(0, self.shape) if self.shape else self.data[0]
+        return nest(0, self.shape) if self.shape else data[0]
 
     def copy(self):
         return ndarray(list(self.data), self.shape)
@@ -74,13 +97,13 @@ class ndarray:  # noqa: N801 - numpy's name
         shape = tuple(shape[0]) if len(shape) == 1 and not isinstance(shape[0], int) else shape
         if -1 in shape:
             known = _count(d for d in shape if d != -1) or 1
-            shape = tuple(len(self.data) // known if d == -1 else d for d in shape)
-        if _count(shape) != len(self.data):
-            raise ValueError(f"cannot reshape array of size {len(self.data)} into shape {shape}")
-        return ndarray(self.data, tuple(shape))
+            shape = tuple(self.size // known if d == -1 else d for d in shape)
+        if _count(shape) != self.size:
+            raise ValueError(f"cannot reshape array of size {self.size} into shape {shape}")
+        return ndarray(self.data, tuple(shape))  # a view when this array is all of its base, as in numpy
 
     def flatten(self):
-        return ndarray(list(self.data), (len(self.data),))
+        return ndarray(list(self.data), (self.size,))
 
     ravel = flatten
 
@@ -116,7 +139,7 @@ class ndarray:  # noqa: N801 - numpy's name
         return any(x == value for x in self.data)
 
     def __bool__(self):
-        if len(self.data) != 1:
+        if self.size != 1:
             raise ValueError("The truth value of an array with more than one element is ambiguous. "
                              "Use a.any() or a.all()")
         return bool(self.data[0])
@@ -128,19 +151,24 @@ class ndarray:  # noqa: N801 - numpy's name
         return str(self.tolist()).replace(",", "")
 
     def __getitem__(self, key):
-        if isinstance(key, ndarray) and _kind(key.data) is bool:
+        if isinstance(key, ndarray) and _kind(key.data) is bool:  # a mask: a copy, as in numpy
             return ndarray([x for x, keep in zip(self.data, key.data) if keep], (sum(key.data),))
-        positions, shape = _select(self.shape, key)
-        if not shape:
-            return self.data[positions[0]]
-        return ndarray([self.data[p] for p in positions], shape)
+        view = _view(self, key)
+        return self.base[view.offset] if not view.shape else view
 
     def __setitem__(self, key, value):
-        positions, shape = _select(self.shape, key)
+        if isinstance(key, ndarray) and _kind(key.data) is bool:
+            positions = [p for p, keep in zip(self.positions(), key.data) if keep]
+            shape = (len(positions),)
+        else:
+            view = _view(self, key)
+            positions, shape = view.positions(), view.shape
         values = _broadcast_to(value, shape, len(positions))
-        kind = _kind(self.data)
+        if self.kind is None:
+            data = self.base
+            self.kind = _kind(data) if all(type(x) in (int, float, bool) for x in data) else (lambda x: x)
         for p, v in zip(positions, values):
-            self.data[p] = kind(v) if kind is not bool or type(v) is bool else v
+            self.base[p] = self.kind(v)
 
     def __neg__(self):
         return ndarray([-x for x in self.data], self.shape)
@@ -162,27 +190,26 @@ def _cast(dtype):
     raise TypeError(f"dtype {dtype!r:.40} is not available in the sandbox (int, float, bool)")
 
 
-def _select(shape: tuple, key) -> tuple:
-    """The flat positions an index selects, and the shape of the result."""
+def _view(a: ndarray, key) -> ndarray:
+    """numpy's basic indexing: ints and slices, per axis, as a view of a's base."""
     keys = key if type(key) is tuple else (key,)
-    if len(keys) > len(shape):
-        raise IndexError(f"too many indices for array: array is {len(shape)}-dimensional, but {len(keys)} were indexed")
-    keys = keys + (slice(None),) * (len(shape) - len(keys))
-    ranges, result = [], []
-    for k, d in zip(keys, shape):
+    if len(keys) > len(a.shape):
+        raise IndexError(f"too many indices for array: array is {len(a.shape)}-dimensional, but {len(keys)} were indexed")
+    offset, shape, strides = a.offset, [], []
+    for axis, (d, s) in enumerate(zip(a.shape, a.strides)):
+        k = keys[axis] if axis < len(keys) else slice(None)
         if type(k) is slice:
             r = range(d)[k]
-            ranges.append(r)
-            result.append(len(r))
-        elif isinstance(k, int):
+            offset += (r.start if len(r) else 0) * s
+            shape.append(len(r))
+            strides.append(r.step * s)
+        elif isinstance(k, int) and type(k) is not bool:
             if not -d <= k < d:
-                raise IndexError(f"index {k} is out of bounds for axis with size {d}")
-            ranges.append((k % d,))
+                raise IndexError(f"index {k} is out of bounds for axis {axis} with size {d}")
+            offset += (k % d) * s
         else:
-            raise IndexError("only integers, slices (`:`) and boolean arrays are valid indices in the sandbox")
-    strides = [_count(shape[i + 1:]) for i in range(len(shape))]
-    positions = [sum(i * s for i, s in zip(index, strides)) for index in itertools.product(*ranges)]
-    return positions, tuple(result)
+            raise IndexError("only integers, slices (`:`) and boolean masks are valid indices in the sandbox")
+    return ndarray(a.base, tuple(shape), offset, tuple(strides))
 
 
 def _broadcast_to(value, shape: tuple, n: int) -> list:
@@ -206,7 +233,8 @@ def _pair(a, b, op):
     _count(shape)
     if sa == sb:
         return (ndarray([op(x, y) for x, y in zip(a.data, b.data)], tuple(shape)),)
-    data = [op(a.data[_flat(index, sa)], b.data[_flat(index, sb)]) for index in itertools.product(*map(range, shape))]
+    da, db = a.data, b.data
+    data = [op(da[_flat(index, sa)], db[_flat(index, sb)]) for index in itertools.product(*map(range, shape))]
     return (ndarray(data, tuple(shape)),)
 
 

@@ -111,6 +111,12 @@ CONSTRUCTS = {
         "    put(board, 'washer', 'red', x, y)\nt = m.T\nput(board, 'nut', 'blue', t[1, 0] % 8, t[0, 1])\nflat = m.flatten().tolist()\n"
         "put(board, 'screw', 'green', flat[-1] % 8, len(flat) % 8)\nsel = np.where(m > 12, m - 10, 0)\nput(board, 'washer', 'yellow', sel.max(), np.sum(sel) % 8)\n"
         "put(board, 'nut', 'red', *(m[1:3, 2] % 8))\nput(board, 'washer', 'blue', int(m[m > 13][0]) % 8, np.min(m) + 6)"),
+    "numpy views": (
+        "import numpy as np\ngrid = np.zeros((8, 8), dtype=int)\ngrid[2][3] = 1\nrow = grid[4]\nrow[1:3] = 5\ngrid.T[0, 6] = 7\n"
+        "grid[grid == 5] = 2\ncol = grid[:, 1]\ncol[7] = 9\nfor x, y in zip(*np.where(grid > 0)):\n"
+        "    put(board, 'washer', 'red', x, y)\nvals = [int(v) for v in grid.flatten() if v]\n"
+        "put(board, 'nut', 'blue', 6, len(vals))\nput(board, 'nut', 'yellow', 5, sum(vals) % 8)\n"
+        "flat = grid.reshape(-1)\nflat[63] = 1\nput(board, 'screw', 'green', 7, int(grid[7, 7]))"),
     "numpy linspace and ones": (
         "import numpy as np\nys = np.linspace(0, 7, 4).astype(int)\nfor y in ys:\n    put(board, 'washer', 'green', 6, y)\n"
         "o = np.ones(3, dtype=int) * 4\nput(board, 'nut', 'red', o[0], int(o.sum()) % 8)\nprint(np.array([1, 2]) == np.array([1, 3]))"),
