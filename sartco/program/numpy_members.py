@@ -1,6 +1,7 @@
 """numpy's functions in the stand-in (arrays.py has the arrays): `array`/`asarray`, `zeros`,
 `ones`, `full`, `arange`, `linspace` (numpy's formula: start + i * step, the last item stop),
-`ndindex`, `where` (1 and 3 arguments), `sum`/`min`/`max`/`any`/`all`/`mean` of a whole array,
+`ndindex`, `where` (1 and 3 arguments), `meshgrid`, `argwhere`, `unique`, `concatenate` (axis 0),
+`zeros_like`/`ones_like`, `sum`/`min`/`max`/`any`/`all`/`mean` of a whole array,
 and `sqrt`, `floor`, `ceil`, `abs` elementwise. Every result is within the length budget.
 """
 from __future__ import annotations
@@ -94,11 +95,49 @@ def _elementwise(function, name):
     return apply
 
 
+def meshgrid(x, y, indexing="xy"):
+    xs, ys = array(x).data, array(y).data
+    if indexing == "ij":
+        return ndarray([a for a in xs for _ in ys], (len(xs), len(ys))), ndarray([b for _ in xs for b in ys], (len(xs), len(ys)))
+    return ndarray([a for _ in ys for a in xs], (len(ys), len(xs))), ndarray([b for b in ys for _ in xs], (len(ys), len(xs)))
+
+
+def argwhere(a):
+    found = where(a)
+    return ndarray([int(axis.data[i]) for i in range(len(found[0].data)) for axis in found], (len(found[0].data), len(found)))
+
+
+def unique(a):
+    items = sorted(set(array(a).data))
+    return ndarray(items, (len(items),))
+
+
+def concatenate(arrays, axis=0):
+    parts = [array(a) for a in arrays]
+    if axis != 0 or len({p.shape[1:] for p in parts}) > 1:
+        raise ValueError("np.concatenate in the sandbox joins arrays of the same shape along axis 0")
+    data = [x for p in parts for x in p.data]
+    _count((len(data),))
+    return ndarray(data, (sum(p.shape[0] for p in parts), *parts[0].shape[1:]))
+
+
+def _like(value):
+    def like(a, dtype=None):
+        source = array(a)
+        return full(source.shape, value, dtype if dtype is not None else type(_kind_of(source)(value)))
+    return like
+
+
+def _kind_of(a):
+    return float if any(type(x) is float for x in a.data) else int
+
+
 MEMBERS = {
     "ndarray": ndarray, "array": array, "asarray": array, "zeros": zeros, "ones": ones, "full": full,
     "arange": arange, "linspace": linspace, "ndindex": ndindex, "where": where,
     **{name: _whole(name) for name in ("sum", "min", "max", "any", "all", "mean")},
-    "amin": _whole("min"), "amax": _whole("max"),
+    "amin": _whole("min"), "amax": _whole("max"), "meshgrid": meshgrid, "argwhere": argwhere, "unique": unique,
+    "concatenate": concatenate, "zeros_like": _like(0), "ones_like": _like(1),
     "sqrt": _elementwise(math.sqrt, "sqrt"), "abs": _elementwise(abs, "abs"),
     "floor": _elementwise(lambda v: float(math.floor(v)), "floor"),
     "ceil": _elementwise(lambda v: float(math.ceil(v)), "ceil"),

@@ -5,7 +5,7 @@ program can reach the dict, so one serves them all; `$t` is set per program): th
 builtins (some with budgets: `range`, `round`, `sum`, `pow` in budget.py, `int`, `str`, `repr`,
 `ascii` in conversions.py, `format` in formatting.py; `print` does nothing), a refusing
 stand-in for every other builtin name (calling it is `forbidden`), `__import__` for the
-stand-in modules (modules.py), and the `$` helpers that nodes.py inserts. The result board is
+stand-in modules (modules.py), `__build_class__` for class statements (records.py), and the `$` helpers that nodes.py inserts. The result board is
 the global `board` if it is a Board, else the most recently created board. Every outcome is
 turned into `[ok, code, message, cells, puts]`, the message cleaned (execution.clean).
 

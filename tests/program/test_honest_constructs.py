@@ -117,6 +117,12 @@ CONSTRUCTS = {
         "    put(board, 'washer', 'red', x, y)\nvals = [int(v) for v in grid.flatten() if v]\n"
         "put(board, 'nut', 'blue', 6, len(vals))\nput(board, 'nut', 'yellow', 5, sum(vals) % 8)\n"
         "flat = grid.reshape(-1)\nflat[63] = 1\nput(board, 'screw', 'green', 7, int(grid[7, 7]))"),
+    "numpy meshgrid, argwhere, unique, concatenate": (
+        "import numpy as np\nX, Y = np.meshgrid(np.arange(3), np.arange(2))\nfor x, y in zip(X.flatten(), Y.flatten()):\n"
+        "    put(board, 'washer', 'red', x, y)\nI, J = np.meshgrid([5, 6], [1, 2, 3], indexing='ij')\nfor x, y in zip(I.ravel(), J.ravel()):\n"
+        "    put(board, 'nut', 'blue', x, y)\nm = np.zeros_like(np.ones((8, 8), dtype=int))\nm[7, 5] = 1\nfor x, y in np.argwhere(m):\n"
+        "    put(board, 'screw', 'green', x, y)\nu = np.unique([4, 1, 4, 2])\nc = np.concatenate([u, np.array([7])])\n"
+        "for y in c:\n    put(board, 'washer', 'yellow', 3, y)"),
     "numpy linspace and ones": (
         "import numpy as np\nys = np.linspace(0, 7, 4).astype(int)\nfor y in ys:\n    put(board, 'washer', 'green', 6, y)\n"
         "o = np.ones(3, dtype=int) * 4\nput(board, 'nut', 'red', o[0], int(o.sum()) % 8)\nprint(np.array([1, 2]) == np.array([1, 3]))"),
