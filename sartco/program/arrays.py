@@ -52,6 +52,8 @@ class ndarray:  # noqa: N801 - numpy's name
     __slots__ = ("base", "shape", "offset", "strides", "kind")
 
     def __init__(self, data: list, shape: tuple, offset: int = 0, strides: tuple | None = None):
+        if type(data) is not list or type(shape) is not tuple:
+            raise TypeError("np.ndarray(...) is not available in the sandbox: make arrays with np.array, np.zeros, ...")
         self.base, self.shape, self.offset = data, shape, offset
         self.strides = _strides(shape) if strides is None else strides
         self.kind = None  # the item type assignments convert to, found at the first one
@@ -64,6 +66,7 @@ class ndarray:  # noqa: N801 - numpy's name
         return [self.base[p] for p in self.positions()]
 
     def positions(self) -> list:
+        _count(self.shape)
         out = [self.offset]
         for d, s in zip(self.shape, self.strides):
             out = [p + i * s for p in out for i in range(d)]

@@ -60,6 +60,7 @@ HOSTILE = {
     "random instance state": ("getstate = 0\nimport random\ns = random.Random(1).getstate()", X),
     "random bits": ("import random\nb = random.getrandbits(10**9)", F),
     "numpy array internals": ("data = 0\nimport numpy as np\nd = np.array([1]).data", X),
+    "numpy ndarray constructor": ("import numpy as np\na = np.ndarray((3, 3))", E.TYPE_ERROR),
     "numpy dtype object": ("import numpy as np\na = np.zeros(3, dtype=print)", E.TYPE_ERROR),
     # the world's objects through the new surface
     "attribute store on the board": ("board.puts = 0", F),
