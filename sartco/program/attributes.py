@@ -40,6 +40,7 @@ UNBOUND = {  # built-in types and stand-in members a program may read a method o
     frozenset: (frozenset, _FROZEN), tuple: (tuple, frozenset({"index", "count"})),
     itertools.chain: (itertools.chain, frozenset({"from_iterable"})),
 }
+_TYPE_LIKE = type(STR)  # the type of the program's `str` and `int` (conversions.py)
 RECORD_NAMES = frozenset({"_asdict", "_replace", "_fields", "_make", "_field_defaults", "args"})  # args: exceptions
 NAMES = METHODS.union(*MEMBERS.values(), *TYPES.values(), RECORD_NAMES, {"fromkeys", "from_iterable"})
 
@@ -72,6 +73,12 @@ def _unbound(real: type, name: str):
 def read(obj, name: str):
     """`obj.name` in a program (`$attr`)."""
     t = type(obj)
+    allowed = TYPE_METHODS.get(t)
+    if allowed is not None:
+        if name not in allowed:
+            raise AttributeError(f"'{t.__name__}' object has no attribute '{name}'")
+        checked = CHECKED_METHODS.get(name)
+        return getattr(obj, name) if checked is None else checked(obj)
     if t is Module:
         try:
             return obj.__dict__[name]
@@ -86,18 +93,17 @@ def read(obj, name: str):
         if type(obj.__thisclass__) is not ProgramClass or (name[:2] == "__" and name not in DEFINABLE):
             raise Forbidden(f"super().{name} is allowed only in the program's own classes")
         return getattr(obj, name)
-    if t is type or t is type(STR):
+    if t is type or t is _TYPE_LIKE:
         entry = UNBOUND.get(obj)
         if entry is not None and name in entry[1]:
             return _unbound(entry[0], name)
-    allowed = TYPE_METHODS.get(t) or TYPES.get(t)
+    allowed = TYPES.get(t)
     if allowed is None:
         raise Forbidden(f".{name} is allowed only on str, list, dict, set, tuple, the allowed modules and the "
                         f"program's own classes, not on {t.__name__}")
     if name not in allowed:
         raise AttributeError(f"'{t.__name__}' object has no attribute '{name}'")
-    checked = CHECKED_METHODS.get(name) if t in TYPE_METHODS else None
-    return getattr(obj, name) if checked is None else checked(obj)
+    return getattr(obj, name)
 
 
 class _Fields:
