@@ -48,9 +48,24 @@ def is_program_object(obj) -> bool:
     return type(type(obj)) is ProgramClass or type(obj) is ProgramClass
 
 
+SERIALS: dict[int, tuple] = {}  # id(object) -> (its hash, the object): the current program's
+
+
+def serial_hash(obj) -> int:
+    """The default hash of a program's objects: the order in which they were first hashed, not
+    their address, so that sets and dicts of them iterate alike in every worker."""
+    entry = SERIALS.get(id(obj))
+    if entry is None:
+        entry = SERIALS[id(obj)] = (len(SERIALS), obj)  # held: no other object takes its id
+    return entry[0]
+
+
 def make(name: str, bases: tuple, namespace: dict):
     """A program class from a namespace whose names were checked (or are ours)."""
     for key in namespace:
         if key[:2] == "__" and key not in DEFINABLE and key not in COMPILER_NAMES and key != "__slots__":
             raise Forbidden(f"class {name}: defining {key} is not allowed (it changes how Python treats the object)")
+    if "__hash__" not in namespace and "__eq__" not in namespace and all(
+            base.__hash__ is object.__hash__ or base.__hash__ is serial_hash for base in bases):
+        namespace["__hash__"] = serial_hash
     return ProgramClass(name, bases, namespace)

@@ -36,6 +36,7 @@ from .budget import Forbidden, Limit
 from .execution import clean, not_a_str
 from .instrument import prepare
 from . import attributes, chance
+from .classes import SERIALS
 from .records import build_class
 from .modules import import_module
 
@@ -188,8 +189,10 @@ def _depth() -> int:
 def namespace(board, init_board, name: str = "__main__") -> dict:
     """The globals of one program, a fresh module named `name` (`__main__`: a script, so
     `if __name__ == "__main__":` runs): `board`, `put`, `init_board` and the sandbox's builtins.
-    A new program also starts the `random` stand-in afresh (chance.py)."""
+    A new program also starts the `random` stand-in and the default hashes of its objects
+    afresh (chance.py, classes.serial_hash)."""
     chance.fresh()
+    SERIALS.clear()
     return {"__builtins__": BUILTINS, "__name__": name, "board": board, "put": put, "init_board": init_board}
 
 

@@ -175,6 +175,17 @@ def test_unseeded_random_is_seeded_with_zero_in_every_worker():
     assert all(ex.ok and ex.cells == expected for run in runs for ex in run)
 
 
+ORDER_SENSITIVE = ("class Spot:\n    def __init__(self, y):\n        self.y = y\nspots = {Spot(y) for y in range(8)}\n"
+                   "for x, s in enumerate(spots):\n    put(board, 'washer', 'red', x, s.y)")
+
+
+def test_sets_of_program_objects_iterate_alike_in_every_worker():
+    """Objects without __hash__ hash by the order they were first hashed, not by address."""
+    runs = [ex.cells for _ in range(3) for ex in execute_many([ORDER_SENSITIVE] * 4, cache=False, workers=2)]
+    assert runs[0] == {f"{x}:{x}": [["washer", "red"]] for x in range(8)}
+    assert all(cells == runs[0] for cells in runs)
+
+
 def test_random_state_does_not_leak_between_programs():
     first = "import random\nrandom.seed(3)\nx = random.random()\nput(board, 'washer', 'red', 0, 0)"
     second = "import random\nput(board, 'washer', 'red', random.randint(0, 7), 0)"
