@@ -13,7 +13,7 @@ backtrack in C code for longer than any budget sees; `typing.get_type_hints` and
 Stand-ins of their own: numpy (arrays.py, numpy_members.py: arrays with numpy's semantics for
 the subset models use), random (chance.py: CPython's sequence, one generator per program,
 seeded with 0 unless the program seeds it), dataclasses and namedtuple/NamedTuple (records.py:
-classes of the program), `functools.wraps(f)` (without `assigned`/`updated`), and
+classes of the program), `functools.wraps(f)` (without `assigned`/`updated`), `functools.total_ordering`, and
 `from __future__ import annotations`.
 """
 from __future__ import annotations
@@ -93,6 +93,13 @@ def wraps(wrapped):
     return functools.wraps(wrapped)
 
 
+def total_ordering(cls):
+    """functools.total_ordering on the program's own classes."""
+    if type(cls) is not records.ProgramClass:
+        raise TypeError("total_ordering() decorates a class of the program")
+    return functools.total_ordering(cls)
+
+
 _TYPING = ("Any", "Callable", "Dict", "FrozenSet", "Iterable", "Iterator", "List", "Literal", "Mapping",
            "Optional", "Sequence", "Set", "Tuple", "Union", "TypeVar", "Generator", "Deque", "DefaultDict")
 _MATH = ("pi", "e", "tau", "inf", "nan", "sqrt", "isqrt", "floor", "ceil", "trunc", "fabs", "gcd", "log",
@@ -110,7 +117,7 @@ _FACTORIES = {
     "math": lambda: {**{n: getattr(math, n) for n in _MATH}, "factorial": factorial, "comb": comb,
                      "perm": perm, "prod": prod, "lcm": lcm},
     "itertools": lambda: {n: getattr(itertools, n) for n in _ITERTOOLS},
-    "functools": lambda: {"wraps": wraps, "reduce": functools.reduce, "partial": functools.partial, "cache": functools.cache,
+    "functools": lambda: {"wraps": wraps, "total_ordering": total_ordering, "reduce": functools.reduce, "partial": functools.partial, "cache": functools.cache,
                           "lru_cache": functools.lru_cache, "cmp_to_key": functools.cmp_to_key},
     "typing": lambda: {**{n: getattr(typing, n) for n in _TYPING}, "NamedTuple": records.NamedTuple},
     "collections": lambda: {"namedtuple": records.namedtuple, "defaultdict": collections.defaultdict, "Counter": collections.Counter,

@@ -239,6 +239,7 @@ def run(compiled: tuple, rows: int, cols: int, limits) -> list:
         if type(result_board) is not Board:
             result_board = last[0]
         env.clear()
+        SERIALS.clear()  # (the program's objects go with it)
         cells, puts = result_board.cells(), result_board.puts
         message = clean(message)
     except MemoryError:

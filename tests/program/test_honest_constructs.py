@@ -88,6 +88,10 @@ CONSTRUCTS = {
     "seeded random instances": (
         "from random import Random\nr = Random(7)\ns = Random('sartco')\nfor i in range(3):\n    put(board, 'washer', r.choice(['red', 'blue']), i, r.randint(0, 7))\n"
         "put(board, 'nut', 'green', 5, int(s.uniform(0, 8)))\nput(board, 'screw', 'yellow', *r.choices(range(8), k=2))"),
+    "functools.total_ordering": (
+        "from functools import total_ordering\n@total_ordering\nclass V:\n    def __init__(self, n):\n        self.n = n\n"
+        "    def __eq__(self, o):\n        return self.n == o.n\n    def __lt__(self, o):\n        return self.n < o.n\n"
+        "vs = [V(3), V(1), V(2)]\nfor i, v in enumerate(sorted(vs, reverse=True)):\n    if v >= V(2):\n        put(board, 'nut', 'red', i, v.n)"),
     "functools.wraps": (
         "from functools import wraps\ndef logged(f):\n    @wraps(f)\n    def inner(*args):\n        return f(*args)\n    return inner\n"
         "@logged\ndef place(x, y):\n    put(board, 'washer', 'red', x, y)\nplace(1, 2)"),
