@@ -11,7 +11,8 @@ spell, so a program can neither reach nor shadow them:
   formatting with widths above three digits); `a + 1`, `1 + a`, `a += 1` (an int constant
   of at most 64 bits, or a float) stay plain: they make a number one bit longer at most, or fail
   with TypeError, and never a sequence;
-- `x.m` becomes `$attr(x, 'm')`, f-strings `$len(f'...')`, displays with `*x` `$len([...])`;
+- `x.m` becomes `$attr(x, 'm')`, a store or del `x.m = v` `$fields(x, 'm')['m'] = v` (the rule is
+  attributes.py's), f-strings `$len(f'...')`, displays with `*x` `$len([...])`;
 - f-string format specs: a constant one has numbers of at most three digits, a computed one is
   checked when it runs (`$fstr`);
 - every `except` handler starts with `$caught(<the exception>)`, which raises budget stops and
