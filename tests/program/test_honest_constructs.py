@@ -33,6 +33,11 @@ CONSTRUCTS = {
         "    def __init__(self, color):\n        super().__init__('washer', color)\nclass Nut(Piece):\n"
         "    def place(self, b, x, y):\n        super().place(b, x, y + 1)\nfor i, p in enumerate([Washer('red'), Nut('nut', 'blue')]):\n"
         "    p.place(board, i, i)\nput(board, 'screw', 'red', 6, int(isinstance(Washer('x'), Piece)))"),
+    "object base, class constants, del of an attribute": (
+        "class Layout(object):\n    ROWS = 8\n    COLORS = ('red', 'blue')\n    def __init__(self):\n        self.temp = 1\n"
+        "        self.placed = []\nlay = Layout()\ndel lay.temp\ntry:\n    t = lay.temp\nexcept AttributeError:\n"
+        "    t = 3\nfor i, c in enumerate(Layout.COLORS):\n    put(board, 'washer', c, lay.ROWS - 1, i + t)\n    lay.placed.append(i)\n"
+        "put(board, 'nut', 'green', len(lay.placed), 0)"),
     "dunder methods": (
         "class Pos:\n    def __init__(self, x, y):\n        self.x, self.y = x, y\n    def __add__(self, other):\n"
         "        return Pos(self.x + other.x, self.y + other.y)\n    def __eq__(self, other):\n        return (self.x, self.y) == (other.x, other.y)\n"
