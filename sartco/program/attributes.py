@@ -1,7 +1,8 @@
 """What `obj.name` may read and write: the one rule for attributes.
 
 Before running (nodes.py): a name with two leading underscores only if the program may define
-it (classes.DEFINABLE: `super().__init__(...)`, `self.__repr__()`); any other name must be a
+it (classes.DEFINABLE: `super().__init__(...)`, `self.__repr__()`) or read it (classes.READABLE);
+any other name must be a
 method or member the sandbox offers (NAMES) or a name the program itself defines (a name it
 binds, an attribute it stores, a word of one of its string constants: a namedtuple's fields).
 Stores (`obj.name = v`, `del obj.name`, `obj.name += v`) become `$fields(obj, name)[name] ...`.
@@ -10,7 +11,9 @@ When it runs (`$attr` = read, `$fields` = fields):
 - a stand-in module: its members;
 - an object of the program's own classes (or such a class): a name that the object holds or a
   class of its MRO other than `object` defines (never the metaclass's `mro`), dunders only
-  DEFINABLE ones; `super()` in a program's method reads the same way;
+  DEFINABLE ones, and classes.READABLE: an instance's `__class__` (never a class's: the
+  metaclass stays unreachable), a class's `__name__`/`__qualname__`
+  (`f"{self.__class__.__name__}(...)"`); `super()` in a program's method reads like an object;
 - a built-in type used unbound: its allowed methods (`map(str.lower, words)`), `dict.fromkeys`,
   `itertools.chain.from_iterable`;
 - any other object: the methods its type offers (methods.TYPE_METHODS and TYPES below);
@@ -26,7 +29,7 @@ import types
 from .arrays import ARRAY_NAMES, ndarray
 from .budget import Forbidden
 from .chance import RANDOM_METHODS, SeededRandom
-from .classes import DEFINABLE, ProgramClass
+from .classes import DEFINABLE, READABLE, ProgramClass
 from .conversions import STR
 from .methods import CHECKED_METHODS, METHODS, TYPE_METHODS, _DICT, _FROZEN, _LIST, _SET, _STR
 from .modules import MEMBERS, Module
@@ -76,7 +79,7 @@ def read(obj, name: str):
     allowed = TYPE_METHODS.get(t)
     if allowed is not None:
         if name not in allowed:
-            raise AttributeError(f"'{t.__name__}' object has no attribute '{name}'")
+            _missing(t, name)
         checked = CHECKED_METHODS.get(name)
         return getattr(obj, name) if checked is None else checked(obj)
     if t is Module:
@@ -85,6 +88,12 @@ def read(obj, name: str):
         except KeyError:
             raise AttributeError(f"module {obj.__dict__['__name__']!r} has no attribute {name!r} in the sandbox") from None
     if type(t) is ProgramClass or t is ProgramClass:
+        if name in READABLE:
+            if name == "__class__" and t is not ProgramClass:
+                return t
+            if name != "__class__" and t is ProgramClass:
+                return type.__getattribute__(obj, name)
+            raise Forbidden(f".{name} is not available on {'a class' if t is ProgramClass else 'an instance'} in the sandbox")
         if (name[:2] == "__" and name not in DEFINABLE) or not _defined(obj, name):
             raise AttributeError(f"'{t.__name__ if t is not ProgramClass else obj.__name__}' object has no "
                                  f"attribute '{name}'")
@@ -102,8 +111,14 @@ def read(obj, name: str):
         raise Forbidden(f".{name} is allowed only on str, list, dict, set, tuple, the allowed modules and the "
                         f"program's own classes, not on {t.__name__}")
     if name not in allowed:
-        raise AttributeError(f"'{t.__name__}' object has no attribute '{name}'")
+        _missing(t, name)
     return getattr(obj, name)
+
+
+def _missing(t: type, name: str):
+    if name[:2] == "__":
+        raise Forbidden(f".{name} is available only on the program's own objects, not on {t.__name__}")
+    raise AttributeError(f"'{t.__name__}' object has no attribute '{name}'")
 
 
 class _Fields:

@@ -33,6 +33,9 @@ EXCEPTIONS = frozenset(
     "NameError UnboundLocalError".split()
 )
 EXCEPTION_TYPES = frozenset(getattr(builtins, name) for name in EXCEPTIONS)  # the bases a class may have
+# dunder attributes a program may read on its own objects (attributes.py): an instance's class
+# (never a class's class: the metaclass is never reachable) and a class's name
+READABLE = frozenset({"__class__", "__name__", "__qualname__"})
 COMPILER_NAMES = frozenset({"__module__", "__qualname__", "__annotations__", "__classcell__", "__doc__"})
 
 

@@ -24,7 +24,7 @@ import ast
 
 from .allowed import ATTRIBUTES, DENIED, FIELDS, PROVIDED
 from .budget import Forbidden
-from .classes import DEFINABLE
+from .classes import DEFINABLE, READABLE
 from .formatting import LONG_NUMBER, SPEC_DIGITS
 from .modules import MEMBERS, refusal
 
@@ -200,14 +200,14 @@ def _w_attribute(n, wrapped, walk):
     $fields(x, 'm')['m']; a name the sandbox does not offer must be one the program defines
     (checked at the end of the walk: instrument.py)."""
     name = n.attr
-    if name[:2] == "__" and (name not in DEFINABLE or type(n.ctx) is not ast.Load):
+    if name[:2] == "__" and ((name not in DEFINABLE and name not in READABLE) or type(n.ctx) is not ast.Load):
         fail(n, f"attributes starting with two underscores reach the interpreter: .{name}")
     key = _loc(ast.Constant(name), n)
     wrapped.add(id(key))  # ours: not one of the program's strings (Walk.strings)
     if type(n.ctx) is not ast.Load:
         walk.stored.add(name)
         return _loc(ast.Subscript(_call("$fields", [n.value, key], n), key, n.ctx), n)
-    if name not in ATTRIBUTES and name not in DEFINABLE and (name not in walk.reads or type(n.value) is ast.Name):
+    if name not in ATTRIBUTES and name[:2] != "__" and (name not in walk.reads or type(n.value) is ast.Name):
         walk.reads[name] = n  # (a module's name as the owner makes the clearer message)
     return _call("$attr", [n.value, key], n)
 

@@ -38,6 +38,10 @@ CONSTRUCTS = {
         "        self.placed = []\nlay = Layout()\ndel lay.temp\ntry:\n    t = lay.temp\nexcept AttributeError:\n"
         "    t = 3\nfor i, c in enumerate(Layout.COLORS):\n    put(board, 'washer', c, lay.ROWS - 1, i + t)\n    lay.placed.append(i)\n"
         "put(board, 'nut', 'green', len(lay.placed), 0)"),
+    "class name in repr": (
+        "class Piece:\n    def __init__(self, shape):\n        self.shape = shape\n    def __repr__(self):\n"
+        "        return f'{self.__class__.__name__}({self.shape!r})'\n    def twin(self):\n        return self.__class__(self.shape)\n"
+        "p = Piece('nut').twin()\nput(board, p.shape, 'red', len(repr(p)) % 8, len(Piece.__qualname__))"),
     "dunder methods": (
         "class Pos:\n    def __init__(self, x, y):\n        self.x, self.y = x, y\n    def __add__(self, other):\n"
         "        return Pos(self.x + other.x, self.y + other.y)\n    def __eq__(self, other):\n        return (self.x, self.y) == (other.x, other.y)\n"

@@ -35,7 +35,11 @@ HOSTILE = {
     "base from a function": ("class A(print):\n    pass", F),
     # reading what is behind an object
     "type()": ("class A:\n    pass\nt = type(A())", F),
-    "__class__ of an instance": ("class A:\n    pass\nc = A().__class__", F),
+    "__class__ of an instance, then its dict": ("class A:\n    pass\nc = A().__class__.__dict__", F),
+    "metaclass through __class__": ("class A:\n    pass\nM = A.__class__\nB = M('B', (str,), {})", F),
+    "metaclass through an instance's class": ("class A:\n    pass\nM = A().__class__.__class__", F),
+    "__class__ of a builtin object": ("c = (1).__class__", F),
+    "__name__ of a function": ("def f():\n    pass\nn = f.__name__", F),
     "__dict__ of an instance": ("class A:\n    pass\nd = A().__dict__", F),
     "__dict__ of a class": ("class A:\n    pass\nd = A.__dict__", F),
     "mro of a class": ("mro = 1\nclass A:\n    pass\nm = A.mro()", X),
