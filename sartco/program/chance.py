@@ -38,16 +38,18 @@ class SeededRandom(_random.Random):
         return super().choices(population, weights, cum_weights=cum_weights, k=k)
 
 
-SHARED = [SeededRandom()]  # the current program's generator, behind the module's functions
+SHARED = [None]  # the current program's generator, behind the module's functions (made at first use)
 
 
 def fresh():
     """A new program starts: the module's generator starts from the unseeded state."""
-    SHARED[0] = SeededRandom()
+    SHARED[0] = None
 
 
 def _bound(name):
     def function(*args, **kwargs):
+        if SHARED[0] is None:
+            SHARED[0] = SeededRandom()
         return getattr(SHARED[0], name)(*args, **kwargs)
     function.__name__ = name
     return function
