@@ -98,6 +98,12 @@ def results():
     return dict(zip(NAMES, execute_many([HOSTILE[n][0] for n in NAMES], limits=Limits(wall_time=10.0), cache=False)))
 
 
+def test_a_program_object_in_a_put_gives_the_same_message_in_every_worker():
+    forged = HOSTILE["forged colour"][0]
+    runs = execute_many([forged] * 4, cache=False, workers=2)
+    assert {ex.message for ex in runs} == {"line 7: unknown colour <C object>; expected one of red, green, blue, yellow"}
+
+
 @pytest.mark.parametrize("name", NAMES)
 def test_hostile_class_program_is_refused_or_harmless(results, name):
     ex = results[name]
