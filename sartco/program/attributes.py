@@ -29,7 +29,7 @@ import types
 from .arrays import ARRAY_NAMES, ndarray
 from .budget import Forbidden
 from .chance import RANDOM_METHODS, SeededRandom
-from .classes import DEFINABLE, READABLE, ProgramClass
+from .classes import DEFINABLE, EXCEPTION_TYPES, READABLE, ProgramClass
 from .conversions import STR
 from .methods import CHECKED_METHODS, METHODS, TYPE_METHODS, _DICT, _FROZEN, _LIST, _SET, _STR
 from .modules import MEMBERS, Module
@@ -37,6 +37,7 @@ from .modules import MEMBERS, Module
 TYPES = {  # types of the stand-ins and of the class machinery, with the names they offer
     property: frozenset({"setter", "getter", "deleter"}), SeededRandom: RANDOM_METHODS, ndarray: ARRAY_NAMES,
     types.GeneratorType: frozenset({"send", "close"}),
+    **dict.fromkeys(EXCEPTION_TYPES, frozenset({"args"})),  # what a handler may read of a caught error
 }
 UNBOUND = {  # built-in types and stand-in members a program may read a method of
     STR: (str, _STR), list: (list, _LIST), dict: (dict, _DICT | {"fromkeys"}), set: (set, _SET),

@@ -199,6 +199,15 @@ def test_sets_of_program_objects_iterate_alike_in_every_worker():
     assert all(cells == runs[0] for cells in runs)
 
 
+def test_namespace_names_the_module():
+    """One function makes every program's globals; the paper protocol passes another name."""
+    from sartco.program.runtime import namespace
+    board = Board(8, 8)
+    assert namespace(board, None)["__name__"] == "__main__"
+    ns = namespace(board, None, name="scorer")
+    assert (ns["__name__"], ns["board"], ns["put"]) == ("scorer", board, put)
+
+
 def test_random_state_does_not_leak_between_programs():
     first = "import random\nrandom.seed(3)\nx = random.random()\nput(board, 'washer', 'red', 0, 0)"
     second = "import random\nput(board, 'washer', 'red', random.randint(0, 7), 0)"
