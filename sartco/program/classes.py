@@ -13,10 +13,13 @@ method bodies count steps). Then the namespace is checked and the class made:
   `__init_subclass__`, `__set_name__`, `__get__`/`__set__`, `__reduce__`, `__deepcopy__`,
   `__index__`, `__class_getitem__`, `__slots__`, ...). nodes.py refuses the others before running;
   this check says it again for what reaches a class some other way.
-What a program may read and write on these objects is attributes.py's rule.
+Private names in a class (`self.__x`, `def __helper`) are mangled to `_Class__x` before the
+check, as CPython mangles them (mangle_private). What a program may read and write on these
+objects is attributes.py's rule.
 """
 from __future__ import annotations
 
+import ast
 import builtins
 
 from .budget import Forbidden
@@ -72,3 +75,24 @@ def make(name: str, bases: tuple, namespace: dict):
             base.__hash__ is object.__hash__ or base.__hash__ is serial_hash for base in bases):
         namespace["__hash__"] = serial_hash
     return ProgramClass(name, bases, namespace)
+
+
+_PRIVATE = {ast.Attribute: "attr", ast.FunctionDef: "name", ast.Name: "id"}  # the fields CPython mangles that we allow
+
+
+def mangle_private(n: ast.ClassDef):
+    """Private names (`self.__x`, `def __helper`) as CPython mangles them inside a class:
+    `_Class__x`, a plain name (nested classes mangle their own)."""
+    prefix = "_" + n.name.lstrip("_")
+    todo = list(n.body)
+    while todo:
+        node = todo.pop()
+        if type(node) is ast.ClassDef:
+            todo.extend(node.decorator_list + node.bases)
+            continue
+        field = _PRIVATE.get(type(node))
+        if field is not None:
+            name = getattr(node, field)
+            if name[:2] == "__" and name[-2:] != "__" and prefix != "_":
+                setattr(node, field, prefix + name)
+        todo.extend(ast.iter_child_nodes(node))

@@ -24,7 +24,7 @@ import ast
 
 from .allowed import ATTRIBUTES, DENIED, FIELDS, PROVIDED
 from .budget import Forbidden
-from .classes import DEFINABLE, READABLE
+from .classes import DEFINABLE, READABLE, mangle_private
 from .formatting import LONG_NUMBER, SPEC_DIGITS
 from .modules import MEMBERS, refusal
 
@@ -116,6 +116,7 @@ def _r_class(n, walk):
     for statement in n.body:
         if type(statement) is ast.FunctionDef and statement.name in DEFINABLE:
             walk.methods.add(id(statement))
+    mangle_private(n)
 
 
 def _r_loop(n, walk):

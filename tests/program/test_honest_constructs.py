@@ -42,6 +42,11 @@ CONSTRUCTS = {
         "class Piece:\n    def __init__(self, shape):\n        self.shape = shape\n    def __repr__(self):\n"
         "        return f'{self.__class__.__name__}({self.shape!r})'\n    def twin(self):\n        return self.__class__(self.shape)\n"
         "p = Piece('nut').twin()\nput(board, p.shape, 'red', len(repr(p)) % 8, len(Piece.__qualname__))"),
+    "private names": (
+        "class Grid:\n    __size = 8\n    def __init__(self):\n        self.__cells = []\n    def __check(self, x):\n"
+        "        return 0 <= x < self.__size\n    def add(self, x, y):\n        if self.__check(x):\n            self.__cells.append((x, y))\n"
+        "    def cells(self):\n        return [c for c in self.__cells]\ng = Grid()\ng.add(2, 2)\ng.add(9, 1)\nfor x, y in g.cells():\n"
+        "    put(board, 'washer', 'red', x, y)\nput(board, 'nut', 'blue', 3, len(g._Grid__cells))"),
     "dunder methods": (
         "class Pos:\n    def __init__(self, x, y):\n        self.x, self.y = x, y\n    def __add__(self, other):\n"
         "        return Pos(self.x + other.x, self.y + other.y)\n    def __eq__(self, other):\n        return (self.x, self.y) == (other.x, other.y)\n"
