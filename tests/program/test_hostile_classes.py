@@ -28,6 +28,8 @@ HOSTILE = {
     "__slots__ in the body": ("class A:\n    __slots__ = ('x',)", F),
     "dunder assigned in the body": ("class A:\n    __init_subclass__ = print", F),
     "dunder method set later": ("class A:\n    pass\nA.__getattr__ = lambda s, n: 1", F),
+    "private name where nothing mangles it": ("class _:\n    def f(self):\n        return self.__dict\n_().f()", F),
+    "private name outside a class": ("def f(o):\n    return o.__dict\nf(board)", F),
     "nested def named like a dunder": ("def __init__(self):\n    pass", F),
     "base from a builtin type": ("class S(str):\n    def __eq__(self, o):\n        return True", F),
     "base from the board's type": ("class B(type(board)):\n    pass", F),
