@@ -1,6 +1,7 @@
 """Stand-ins that take attribute names as strings (operator.attrgetter, operator.methodcaller):
-each name is read under the same rule as `x.name` in the source (allowed.attribute_problem
-before running, runtime._attr at run time), so no string reaches what an attribute cannot.
+each name is read by the run-time rule of `x.name` (attributes.read), and a name with two
+leading underscores only where the source may name it (classes.READABLE), so no string reaches
+what an attribute cannot.
 Any future stand-in that reads attributes by name (functools.wraps' `assigned`/`updated`, ...)
 reads them through `read`."""
 from __future__ import annotations
@@ -10,17 +11,16 @@ from .budget import Forbidden
 
 def read(obj, name):
     """`obj.name` for a name given as a string (dotted names as attrgetter takes them)."""
-    # imported here: allowed.py and runtime.py import the stand-in modules that use this one
-    from .allowed import attribute_problem
-    from .runtime import _attr
+    # imported here: attributes.py imports the stand-in modules that use this one
+    from .attributes import read as attribute
+    from .classes import READABLE
 
     if type(name) is not str:
         raise TypeError(f"attribute name must be a str, not {type(name).__name__}")
     for part in name.split("."):
-        problem = attribute_problem(part)
-        if problem:
-            raise Forbidden(problem)
-        obj = _attr(obj, part)
+        if part[:2] == "__" and part not in READABLE:
+            raise Forbidden(f"attributes starting with two underscores reach the interpreter: .{part}")
+        obj = attribute(obj, part)
     return obj
 
 

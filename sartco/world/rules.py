@@ -25,10 +25,16 @@ def _fail(code: ErrorCode, message: str):
     raise WorldError(code, message)
 
 
+def _shown(value) -> str:
+    """A value in a message: its repr if it is one of Python's own types, else its type's name
+    (a program's object would show its address, and its own code, in the verdict)."""
+    return f"{value!r:.40}" if type(value).__module__ == "builtins" else f"<{type(value).__name__} object>"
+
+
 def _bad_coordinates(x, y):
     for name, value in (("x", x), ("y", y)):
         if type(value) is not int:
-            _fail(E.TYPE_ERROR, f"{name} must be an integer, got {type(value).__name__} {value!r:.40}")
+            _fail(E.TYPE_ERROR, f"{name} must be an integer, got {type(value).__name__} {_shown(value)}")
 
 
 def check(board: Board, shape, color, x, y) -> int | None:
