@@ -52,3 +52,22 @@ def test_a_hung_server_with_a_2s_timeout_ends_the_run(tmp_path):
     log = (tmp_path / "clembench.log").read_text()
     assert log.count("request aborted") == 4 and "APITimeoutError after 2 tries" in log
     assert not list((tmp_path / "results").rglob("scores.json"))   # no episode scored as if the model had answered
+
+
+def test_sample_plays_every_episode_n_times_through_openai_batching(tmp_path):
+    import os
+    import subprocess
+    import sys
+    games = [i for e in benchrun.select_instances(EXPERIMENTS, 2)["experiments"] for i in e["game_instances"]]
+    with StubServer(answer_table(games), latency=0.0) as server:
+        _, file = setup(tmp_path, server, cache="cache")   # temperature 0.7: the cache must not answer
+        done = subprocess.run([sys.executable, "-m", "sartco", "sample", "-g", benchrun.GAME, "-m", benchrun.MODEL,
+                               "-n", "2", "-t", "0.7", "-b", "4", "-i", str(file), "-r", "res"], cwd=tmp_path,
+                              env=dict(os.environ, CLEMBENCH_HOME=str(benchrun.GAME_DIR.parents[1])),
+                              capture_output=True, text=True, timeout=600)
+        assert done.returncode == 0, done.stderr[-2000:]
+        one_run = sum(len(i["turns"]) for i in games)
+        assert server.requests == 2 * one_run and server.unknown == 0
+    for k in (1, 2):
+        assert len(list((tmp_path / "res" / "samples" / f"s{k}").rglob("scores.json"))) == len(games)
+    assert not (tmp_path / "cache").exists()
