@@ -103,7 +103,7 @@ def results():
 def test_a_program_object_in_a_put_gives_the_same_message_in_every_worker():
     forged = HOSTILE["forged colour"][0]
     runs = execute_many([forged] * 4, cache=False, workers=2)
-    assert {ex.message for ex in runs} == {"line 7: unknown colour <C object>; expected one of red, green, blue, yellow"}
+    assert {ex.message for ex in runs} == {"line 7: a colour is one of red, green, blue, yellow, not a C"}
 
 
 @pytest.mark.parametrize("name", NAMES)
