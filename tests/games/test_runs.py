@@ -61,7 +61,7 @@ def test_stopped_run_is_reported_incomplete_and_resume_completes_it(tmp_path, un
     assert (table3["first_order"]["episodes_expected"], table3["first_order"]["episodes_scored"]) == ("2", "1")
     assert (table3["sequence_function"]["episodes_expected"], table3["sequence_function"]["episodes_scored"]) == ("2", "2")
     md = (tmp_path / "scores" / "table3.md").read_text()
-    assert md.startswith("> † Incomplete results") and "| 100.00† |" in md
+    assert md.startswith("> † Incomplete results") and "| 100.00 [100.00, 100.00]† |" in md
 
     resume = sartco("resume", "-r", tmp_path / "results", "-g", GAME, "-m", "mock")
     assert resume.returncode == 0, resume.stdout[-2000:] + resume.stderr[-2000:]
