@@ -1,0 +1,5 @@
+put(board, 'washer', 'red', 5, 5)
+put(board, 'nut', 'red', 5, 5)
+put(board, 'washer', 'red', 5, 5)
+put(board, 'nut', 'red', 5, 5)
+put(board, 'washer', 'red', 5, 5)
