@@ -105,9 +105,11 @@ class Result:
         return not self.plain.startswith("not honest")
 
 
-def _describe(cells: dict) -> str:
-    pieces = sum(len(stack) for stack in cells.values())
-    return f"{pieces} pieces in {len(cells)} cells"
+def _differences(plain: dict, sandbox: dict, most: int = 3) -> str:
+    """The first cells whose stacks differ, both sides."""
+    keys = [k for k in {**plain, **sandbox} if plain.get(k) != sandbox.get(k)]
+    shown = "; ".join(f"{k} plain exec {plain.get(k, [])} sandbox {sandbox.get(k, [])}" for k in keys[:most])
+    return shown + (f"; and {len(keys) - most} more cells" if len(keys) > most else "")
 
 
 def run(programs: list[tuple[str, str]]) -> list[Result]:
@@ -122,7 +124,7 @@ def run(programs: list[tuple[str, str]]) -> list[Result]:
         if not same_outcome:
             detail = f"plain exec {plain}, sandbox {sandbox}"
         elif ex.cells != cells:
-            detail = f"other board: plain exec {_describe(cells)}, sandbox {_describe(ex.cells)}"
+            detail = f"other board: {_differences(cells, ex.cells)}"
         else:
             detail = ""
         results.append(Result(name, not detail, plain, sandbox, detail))
