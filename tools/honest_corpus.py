@@ -99,6 +99,7 @@ class Result:
     plain: str  # the oracle's outcome
     sandbox: str  # the sandbox's outcome ("ok", or "code: message")
     detail: str  # what differs, "" when they agree
+    pieces: int  # how many pieces plain exec left on the board
 
     @property
     def honest(self) -> bool:
@@ -127,7 +128,8 @@ def run(programs: list[tuple[str, str]]) -> list[Result]:
             detail = f"other board: {_differences(cells, ex.cells)}"
         else:
             detail = ""
-        results.append(Result(name, not detail, plain, sandbox, detail))
+        pieces = sum(len(stack) for stack in cells.values())
+        results.append(Result(name, not detail, plain, sandbox, detail, pieces))
     return results
 
 

@@ -1,4 +1,4 @@
-shapes = ['washer', 'nut', 'washer', 'nut', 'screw']
+shapes = ['washer', 'nut', 'screw', 'nut', 'washer']
 for shape in shapes[:3]:
     put(board, shape, 'red', 0, 5)
 for shape in shapes[3:]:
