@@ -37,6 +37,7 @@ from .modules import MEMBERS, Module
 TYPES = {  # types of the stand-ins and of the class machinery, with the names they offer
     property: frozenset({"setter", "getter", "deleter"}), SeededRandom: RANDOM_METHODS, ndarray: ARRAY_NAMES,
     types.GeneratorType: frozenset({"send", "close"}),
+    types.FunctionType: frozenset({"__name__", "__qualname__"}),  # a function's name (functools.wraps loggers)
     **dict.fromkeys(EXCEPTION_TYPES, frozenset({"args"})),  # what a handler may read of a caught error
 }
 UNBOUND = {  # built-in types and stand-in members a program may read a method of

@@ -4,8 +4,8 @@ The authors called `exec(code)` inside `_execute_instructions(instruction, board
 their scorer module (../shared/sartco-data/paper-protocol/README.md, "How the authors ran a
 program"). `paper(env, source)` turns the module namespace that runtime.run built into the two
 dictionaries of `exec(code, globals, locals)`:
-- globals: the scorer module's names: `put`, `init_board`, `np` (numpy), `json`, `re`, `Counter`,
-  `deepcopy` (each the sandbox's stand-in), `__name__` = MODULE_NAME (not "__main__", so an
+- globals: the scorer module's names: `put`, `init_board`, `np` (numpy; runtime.namespace binds it
+  for our protocol too), `json`, `re`, `Counter`, `deepcopy` (each the sandbox's stand-in), `__name__` = MODULE_NAME (not "__main__", so an
   `if __name__ == "__main__":` block never runs); no `board`;
 - locals: the function's `instruction` (the program text) and `board`.
 So the program's top level sees both; its top-level assignments go to the locals (rebinding
@@ -51,7 +51,8 @@ def paper(env: dict, source: str) -> tuple[dict, dict]:
     (which loses `board`: it moves to the locals)."""
     board = env.pop("board")
     env.update({
-        "__name__": MODULE_NAME, "np": load("numpy"), "json": load("json"), "re": Module("re", dict(_RE)),
+        # (np: runtime.namespace binds it, in both protocols)
+        "__name__": MODULE_NAME, "json": load("json"), "re": Module("re", dict(_RE)),
         "Counter": vars(load("collections"))["Counter"], "deepcopy": vars(load("copy"))["deepcopy"],
     })
     return env, {"instruction": source, "board": board}

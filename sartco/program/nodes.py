@@ -118,6 +118,9 @@ def _r_class(n, walk):
     for statement in n.body:
         if type(statement) is ast.FunctionDef and statement.name in DEFINABLE:
             walk.methods.add(id(statement))
+        elif type(statement) is ast.FunctionDef and statement.name in PROVIDED:  # a method `put`: the
+            walk.methods.add(id(statement))  # class's name, not the program's (`robot.put(...)`)
+            walk.stored.add(statement.name)
     mangle_private(n)
 
 

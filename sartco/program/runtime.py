@@ -39,7 +39,7 @@ from .instrument import prepare
 from . import attributes, chance
 from .classes import SERIALS
 from .records import build_class
-from .modules import forget_typing, import_module
+from .modules import forget_typing, import_module, load
 from .result import board_result
 
 E = ErrorCode
@@ -200,12 +200,14 @@ def _depth() -> int:
 
 def namespace(board, init_board, name: str = "__main__") -> dict:
     """The globals of one program, a fresh module named `name` (`__main__`: a script, so
-    `if __name__ == "__main__":` runs): `board`, `put`, `init_board` and the sandbox's builtins.
+    `if __name__ == "__main__":` runs): `board`, `put`, `init_board`, `np` (numpy's stand-in, bound
+    without an import as the authors' namespace bound it) and the sandbox's builtins.
     A new program also starts the `random` stand-in and the default hashes of its objects
     afresh (chance.py, classes.serial_hash)."""
     chance.fresh()
     SERIALS.clear()
-    return {"__builtins__": BUILTINS, "__name__": name, "board": board, "put": put, "init_board": init_board}
+    return {"__builtins__": BUILTINS, "__name__": name, "board": board, "put": put, "init_board": init_board,
+            "np": load("numpy")}
 
 
 def run(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE, source: str = "") -> list:

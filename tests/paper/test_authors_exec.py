@@ -3,6 +3,7 @@ authors ran a program"): one test per rule, each program run in the sandbox with
 and by the plain-exec model of the authors' scorer (tests/authors_scorer.py); verdict and board
 must agree, and each rule's programs give the verdict the README states. Our protocol (MODULE)
 keeps a script's semantics for the same programs."""
+import numpy
 import pytest
 
 from authors_scorer import reference
@@ -20,8 +21,9 @@ def sandbox(program: str, semantics=PAPER) -> tuple:
 
 
 def script(program: str) -> tuple:
-    """Plain exec as a script's module (our protocol's contract)."""
-    env = {"__name__": "__main__", "board": Board(), "put": put, "init_board": Board}
+    """Plain exec as a script's module (our protocol's contract), with `np` bound as the authors'
+    namespace bound it (our protocol binds it too)."""
+    env = {"__name__": "__main__", "board": Board(), "put": put, "init_board": Board, "np": numpy}
     exec(program, env)
     return True, None, (env["board"] if type(env["board"]) is Board else Board()).cells()
 

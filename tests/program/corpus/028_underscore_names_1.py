@@ -1,0 +1,2 @@
+for _ in range(1):
+    put(board, 'washer', 'red', 0, 0)

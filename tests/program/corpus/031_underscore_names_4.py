@@ -1,0 +1,2 @@
+_, y = (9, 4)
+put(board, 'washer', 'yellow', 4, y)

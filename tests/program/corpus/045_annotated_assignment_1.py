@@ -1,0 +1,3 @@
+x: int = 2
+y: int = 5
+put(board, 'washer', 'red', x, y)

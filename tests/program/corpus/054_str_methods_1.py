@@ -1,0 +1,3 @@
+spec = 'washer:red:7:3'
+shape, color, x, y = spec.split(':')
+put(board, shape, color, int(x), int(y))

@@ -1,0 +1,3 @@
+shape = 'washer'
+if shape.startswith('wash') and shape.endswith('er'):
+    put(board, shape, 'green', 3, 3)

@@ -1,0 +1,2 @@
+color = ' '.join(['red'])
+put(board, 'washer', color, 1, 1)

@@ -1,0 +1,3 @@
+id = 2
+input = 'red'
+put(board, 'screw', input, id, id)

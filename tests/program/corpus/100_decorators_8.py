@@ -1,0 +1,3 @@
+stack = [('washer', 'red'), ('nut', 'blue'), ('screw', 'yellow')]
+for shape, color in stack:
+    put(board, shape, color, 3, 4)

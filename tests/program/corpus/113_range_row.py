@@ -1,0 +1,2 @@
+for y in range(8):
+    put(board, 'washer', 'blue', 4, y)

@@ -1,0 +1,2 @@
+for x in range(0, 8, 2):
+    put(board, 'nut', 'red', x, 7)

@@ -1,0 +1,5 @@
+put(board, 'washer', 'red', 1, 1)
+put(board, 'nut', 'red', 1, 1)
+put(board, 'washer', 'red', 1, 2)
+put(board, 'nut', 'red', 1, 2)
+put(board, 'bridge-h', 'green', 1, 1)

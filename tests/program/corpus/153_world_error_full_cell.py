@@ -1,0 +1,6 @@
+put(board, 'washer', 'red', 5, 5)
+put(board, 'washer', 'red', 5, 6)
+put(board, 'bridge-h', 'blue', 5, 5)
+put(board, 'nut', 'green', 5, 5)
+put(board, 'washer', 'yellow', 5, 5)
+put(board, 'screw', 'red', 5, 5)

@@ -1,0 +1,2 @@
+put(board, 'washer', 'red', 0, 0)
+put(board, 'washer', 'red', -1, 0)

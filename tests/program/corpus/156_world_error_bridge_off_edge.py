@@ -1,0 +1,1 @@
+put(board, 'bridge-h', 'yellow', 3, 7)

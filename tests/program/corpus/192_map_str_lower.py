@@ -1,0 +1,3 @@
+names = ['WASHER', 'Nut', 'SCREW']
+for shape in map(str.lower, names):
+    put(board, shape, 'green', 4, 4)

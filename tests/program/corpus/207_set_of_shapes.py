@@ -1,0 +1,3 @@
+shapes = {'washer', 'nut'}
+for shape in shapes:
+    put(board, shape, 'blue', 0, 0)

@@ -1,0 +1,3 @@
+base = {'shape': 'washer', 'color': 'red'}
+override = base | {'color': 'green'}
+put(board, override['shape'], override['color'], 7, 3)

@@ -1,0 +1,5 @@
+board = init_board(8, 8)
+put(board, 'washer', 'red', 0, 0)
+print(board)
+put(board, 'nut', 'green', 0, 0)
+print("Board after placing:", board)

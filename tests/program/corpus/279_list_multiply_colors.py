@@ -1,0 +1,3 @@
+colors = ['yellow'] * 4
+for x, c in enumerate(colors):
+    put(board, 'washer', c, x, 4)

@@ -1,0 +1,3 @@
+order = 'red green blue'.split()[::-1]
+for i, c in enumerate(order):
+    put(board, 'nut', c, 6, i)

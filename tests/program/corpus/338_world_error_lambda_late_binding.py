@@ -1,0 +1,3 @@
+actions = [lambda: put(board, 'washer', 'red', 0, i) for i in range(3)]
+for act in actions:
+    act()

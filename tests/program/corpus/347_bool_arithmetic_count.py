@@ -1,0 +1,2 @@
+flags = [True, False, True, True]
+put(board, 'washer', 'red', sum(flags), flags.count(False))
