@@ -10,24 +10,30 @@ board that counts is the global `board` at the end if it is a Board, else the mo
 created one; `cells` is that board also when the program failed part way.
 
 The contract: any program that plain `exec` with `board`, `put` and `init_board` runs correctly,
-and that reaches nothing outside the task's world, builds the same board here. Ordinary
-Python works: functions, lambdas, decorators, loops,
-comprehensions, try/except/else/finally, raise, assert, del, global/nonlocal, annotations,
-`_` names, set/dict/list displays, the common methods of str/list/dict/set/tuple (and of
-collections' defaultdict/Counter/deque), f-strings, `str.format` and `%` formatting, map, filter,
-isinstance, float, next/iter, and imports of math, itertools, functools, typing, collections,
-copy, operator, string and numpy (a stand-in: `np.ndarray` for annotations, small helpers that
-return lists), all under the budgets of Limits.
+run as a script (`__name__ == "__main__"`), and that reaches nothing outside the task's world,
+builds the same board here. Ordinary Python works: functions, lambdas, decorators, loops,
+comprehensions, generators, classes (with the ordinary dunder methods, properties, static and
+class methods, inheritance, super()), try/except/else/finally, raise, assert, del,
+global/nonlocal, annotations, `_` names, set/dict/list displays, the common methods of
+str/list/dict/set/tuple (and of collections' defaultdict/Counter/deque), f-strings,
+`str.format` and `%` formatting, map, filter, isinstance, float, next/iter, and imports of math,
+itertools, functools, typing, collections, copy, operator, string, dataclasses, random (CPython's
+sequence; seeded with 0 unless the program seeds it) and numpy (arrays with numpy's semantics
+for the subset models use), all under the budgets of Limits.
 
 Refused (`forbidden`, with the reason in the message), because they reach the interpreter, the
 file system, the network or the scoring:
-- names and attributes with two leading underscores (`__class__`, `__import__`, ...), any
-  other attribute than the allowed methods and module members, any attribute store;
+- names and attributes with two leading underscores (`__class__`, `__import__`, ...) except the
+  dunder methods a class may define and `__name__`; any other attribute than the allowed
+  methods, module members and what the program defines; attribute stores except on the
+  program's own objects (attributes.py has the rule);
 - eval, exec, compile, open, input, getattr/setattr, type, object, globals/vars, breakpoint and
   Python's other builtins that are not listed above (unless the program binds the name itself);
-- imports of anything but the stand-in modules (os, sys, subprocess, random, re, ...), and the
-  members they do not offer (typing.get_type_hints, collections.namedtuple, numpy.linalg, ...);
-- class, with, yield, async/await, match, try/except*;
+- imports of anything but the stand-in modules (os, sys, subprocess, re, ...), and the
+  members they do not offer (typing.get_type_hints, numpy.linalg, ...);
+- metaclasses, class keywords, bases other than the program's classes, exceptions and
+  NamedTuple, and dunder definitions that change how Python treats an object (classes.py);
+- with, async/await, match, try/except*;
 - redefining `put` or `init_board`;
 - format fields that read attributes or items (`{0.x}`, `{0[k]}`), widths above 999, `*` widths.
 Budget stops: `timeout` (steps, wall time) and `resource_limit` (depth, length, integer size,
@@ -48,7 +54,12 @@ Modules (each one's docstring has the details):
   conversions.py  int/str/repr/ascii with budgets;  formatting.py  %, str.format, format(), f-strings
   methods.py      the methods a program may call per type, and the checked ones
   modules.py      the stand-in modules a program may import
-  runtime.py      run one prepared program in a minimal namespace, map outcomes to ErrorCode
+  classes.py      ProgramClass: what a program's class may define and derive from
+  records.py      class statements (build_class), dataclass, namedtuple, NamedTuple
+  attributes.py   the one rule for `obj.name` (reads: $attr, writes: $fields)
+  chance.py       random: CPython's generator, one per program
+  arrays.py       numpy's arrays;  numpy_members.py  numpy's functions
+  runtime.py      run one prepared program in its namespace() (a `__main__` module), map outcomes
   worker.py       the worker process loop (JSON lines over pipes, rlimits)
   driver.py       the parent's side of one worker: chunks, answers, hard kill on wall time
   pool.py         persistent workers, batching, restarts; execute(), execute_many()

@@ -11,9 +11,11 @@ lists: a 100 KB display checks in about the time compile() takes).
 from __future__ import annotations
 
 import ast
+import re
 
 from .allowed import ALLOWED_BUILTINS, EXCEPTIONS, WHAT
 from .budget import Forbidden
+from .modules import MEMBERS
 from .nodes import PLAN, WRAPS, Walk, check_name, fail
 
 __all__ = ["instrument", "prepare"]
@@ -50,6 +52,8 @@ def instrument(tree: ast.Module) -> ast.Module:
                 for child in value if many else (value,):
                     ct = type(child)
                     if ct is const_type or child is None:
+                        if ct is const_type and type(child.value) is str and id(child) not in wrapped:
+                            walk.strings.append(child.value)
                         continue
                     if ct is name_type:
                         if type(child.ctx) is not load_type:
@@ -60,7 +64,7 @@ def instrument(tree: ast.Module) -> ast.Module:
                         continue
                     wrap = wrap_of(ct)
                     if wrap is not None:
-                        new = wrap(child, wrapped)
+                        new = wrap(child, wrapped, walk)
                         if new is not child:
                             if many:
                                 k = value.index(child, k)  # nodes compare by identity
@@ -78,9 +82,31 @@ def instrument(tree: ast.Module) -> ast.Module:
                            f"terminal (builtins here: {', '.join(sorted(ALLOWED_BUILTINS - EXCEPTIONS))})")
             except Forbidden as exc:
                 offences.append(exc)
+    _undefined_attributes(walk, offences)
     if offences:
         raise min(offences, key=lambda exc: exc.position)
     return tree
+
+
+def _undefined_attributes(walk: Walk, offences: list):
+    """An attribute read that the sandbox does not offer must be a name the program defines."""
+    if not walk.reads:
+        return
+    defined = walk.stored.union(*(re.findall(r"[A-Za-z_]\w*", s) for s in walk.strings))
+    for name, node in walk.reads.items():
+        if name in defined:
+            continue
+        owner = node.value.id if type(node.value) is ast.Name else None
+        module = walk.modules.get(owner)
+        if module:
+            text = f"{module}'s {name} is not available in the sandbox (available: {', '.join(sorted(MEMBERS[module]))})"
+        else:
+            text = (f"attribute .{name} is not available in the sandbox (only the common methods of str, list, "
+                    f"dict, set and tuple, the members of the allowed modules and what the program defines)")
+        try:
+            fail(node, text)
+        except Forbidden as exc:
+            offences.append(exc)
 
 
 def prepare(source: str):

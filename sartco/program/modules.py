@@ -5,16 +5,16 @@ per import (nothing a program does to it outlives the program) whose members are
 functions where they cannot reach anything outside the task's world or grow without a budget,
 and checked versions where they could (`math.factorial`, `operator.mul`, ...). Every other
 module is refused, naming why: `os`, `sys`, `subprocess`, `importlib`, `builtins`, `ctypes`,
-`pickle`, `io`, `socket`, ... reach the interpreter, the file system or the network; `random`
-would make the board a matter of chance; `re` can backtrack in C code for longer than any
-budget sees; `collections.namedtuple`, `typing.get_type_hints` and `string.Formatter` run text
-as code or read attributes by name, so they are not members. `MEMBERS` (names only)
-lets instrument.py refuse an unknown module or member before anything runs.
+`pickle`, `io`, `socket`, ... reach the interpreter, the file system or the network; `re` can
+backtrack in C code for longer than any budget sees; `typing.get_type_hints` and
+`string.Formatter` run text as code or read attributes by name, so they are not members.
+`MEMBERS` (names only) lets instrument.py refuse an unknown module or member before anything runs.
 
-numpy is a stand-in for what honest code of this task does with it: `np.ndarray` (and the
-scalar types) in annotations and isinstance checks, small helpers (`arange`, `zeros`, `ones`,
-`full`, `array`) that return plain lists within the length budget, and `pi`, `e`, `sqrt`,
-`floor`, `ceil`, `abs`. Everything else of numpy is refused by name.
+Stand-ins of their own: numpy (arrays.py, numpy_members.py: arrays with numpy's semantics for
+the subset models use), random (chance.py: CPython's sequence, one generator per program,
+seeded with 0 unless the program seeds it), dataclasses and namedtuple/NamedTuple (records.py:
+classes of the program), `functools.wraps(f)` (without `assigned`/`updated`), `functools.total_ordering`, and
+`from __future__ import annotations`.
 """
 from __future__ import annotations
 
@@ -27,8 +27,8 @@ import operator
 import string
 import typing
 
-from . import budget, formatting
-from .budget import Forbidden, too_big, too_long
+from . import budget, chance, formatting, numpy_members, records
+from .budget import Forbidden, too_big
 from .conversions import INT
 
 
@@ -88,56 +88,16 @@ def lcm(*ints):
     return math.lcm(*ints)
 
 
-class ndarray:  # noqa: N801 - numpy's name
-    """numpy.ndarray for annotations and isinstance checks (no program value is one)."""
+def wraps(wrapped):
+    """functools.wraps(wrapped) without `assigned`/`updated` (they name attributes to copy)."""
+    return functools.wraps(wrapped)
 
 
-def _size(shape) -> tuple:
-    dims = (shape,) if type(shape) is int else tuple(shape)
-    total = 1
-    for d in dims:
-        if type(d) is not int or d < 0:
-            raise ValueError(f"numpy stand-in: a shape is non-negative integers, got {shape!r:.40}")
-        total *= d
-        if total > budget.LENGTH:
-            too_long(total)
-    return dims
-
-
-def _filled(dims: tuple, value):
-    if len(dims) == 1:
-        return [value] * dims[0]
-    return [_filled(dims[1:], value) for _ in range(dims[0])]
-
-
-def full(shape, fill_value, dtype=None):
-    return _filled(_size(shape), fill_value if dtype is None else dtype(fill_value))
-
-
-def zeros(shape, dtype=float):
-    return full(shape, 0, dtype)
-
-
-def ones(shape, dtype=float):
-    return full(shape, 1, dtype)
-
-
-def arange(*args, dtype=None):
-    if all(type(a) is int for a in args):
-        return list(budget.checked_range(*args))
-    start, stop, step = (0, *args, 1)[-3:] if len(args) == 1 else (*args, 1)[:3]
-    n = max(0, math.ceil((stop - start) / step))
-    if n > budget.LENGTH:
-        too_long(n)
-    return [start + i * step for i in range(n)]
-
-
-def array(obj, dtype=None):
-    if isinstance(obj, (list, tuple, range)):
-        if len(obj) > budget.LENGTH:
-            too_long(len(obj))
-        return [array(x, dtype) for x in obj]
-    return obj if dtype is None else dtype(obj)
+def total_ordering(cls):
+    """functools.total_ordering on the program's own classes."""
+    if type(cls) is not records.ProgramClass:
+        raise TypeError("total_ordering() decorates a class of the program")
+    return functools.total_ordering(cls)
 
 
 _TYPING = ("Any", "Callable", "Dict", "FrozenSet", "Iterable", "Iterator", "List", "Literal", "Mapping",
@@ -157,19 +117,20 @@ _FACTORIES = {
     "math": lambda: {**{n: getattr(math, n) for n in _MATH}, "factorial": factorial, "comb": comb,
                      "perm": perm, "prod": prod, "lcm": lcm},
     "itertools": lambda: {n: getattr(itertools, n) for n in _ITERTOOLS},
-    "functools": lambda: {"reduce": functools.reduce, "partial": functools.partial, "cache": functools.cache,
+    "functools": lambda: {"wraps": wraps, "total_ordering": total_ordering, "reduce": functools.reduce, "partial": functools.partial, "cache": functools.cache,
                           "lru_cache": functools.lru_cache, "cmp_to_key": functools.cmp_to_key},
-    "typing": lambda: {n: getattr(typing, n) for n in _TYPING},
-    "collections": lambda: {"defaultdict": collections.defaultdict, "Counter": collections.Counter,
+    "typing": lambda: {**{n: getattr(typing, n) for n in _TYPING}, "NamedTuple": records.NamedTuple},
+    "collections": lambda: {"namedtuple": records.namedtuple, "defaultdict": collections.defaultdict, "Counter": collections.Counter,
                             "deque": collections.deque, "OrderedDict": collections.OrderedDict},
     "copy": lambda: {"copy": copy.copy, "deepcopy": copy.deepcopy},
     "operator": lambda: {**{n: getattr(operator, n) for n in _OPERATOR}, "add": budget.add, "mul": budget.mul,
                          "pow": budget.power, "mod": formatting.mod, "lshift": budget.lshift},
     "string": lambda: {n: getattr(string, n) for n in _STRING},
-    "numpy": lambda: {"ndarray": ndarray, "array": array, "zeros": zeros, "ones": ones, "full": full,
-                      "arange": arange, "int_": INT, "int32": INT, "int64": INT, "float64": float,
-                      "float32": float, "pi": math.pi, "e": math.e, "sqrt": math.sqrt, "floor": math.floor,
-                      "ceil": math.ceil, "abs": abs},
+    "numpy": lambda: {**numpy_members.MEMBERS, "int_": INT, "int32": INT, "int64": INT, "float64": float,
+                      "float32": float, "pi": math.pi, "e": math.e},
+    "random": lambda: dict(chance.MEMBERS),
+    "dataclasses": lambda: dict(records.MEMBERS["dataclasses"]),
+    "__future__": lambda: {"annotations": True},
 }
 _MEMBERS_CACHE = {name: make() for name, make in _FACTORIES.items()}
 MEMBERS = {name: frozenset(members) for name, members in _MEMBERS_CACHE.items()}  # for allowed.py and nodes.py
@@ -180,14 +141,15 @@ REFUSED = {  # why a module a program may want is not there
                      "multiprocessing", "socket", "urllib", "http", "requests", "resource", "code", "codeop",
                      "types", "dis", "runpy", "atexit", "traceback", "weakref", "sysconfig", "site"),
                     "it reaches the interpreter, the file system or the network"),
-    "random": "a board that depends on chance cannot be scored; write the coordinates",
     "re": "a regular expression can run in C code beyond every budget",
     "time": "the board must not depend on the clock", "datetime": "the board must not depend on the clock",
 }
 
 
 def refusal(name: str) -> str:
-    top = name.partition(".")[0]
+    top, _, rest = name.partition(".")
+    if top in MEMBERS and rest:
+        return f"{top}'s {rest} is not available in the sandbox (available: {', '.join(sorted(MEMBERS[top]))})"
     reason = REFUSED.get(top, f"the sandbox offers only {', '.join(sorted(MEMBERS))}")
     return f"import of {name} is not allowed: {reason}"
 

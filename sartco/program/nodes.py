@@ -11,7 +11,8 @@ spell, so a program can neither reach nor shadow them:
   formatting with widths above three digits); `a + 1`, `1 + a`, `a += 1` (an int constant
   of at most 64 bits, or a float) stay plain: they make a number one bit longer at most, or fail
   with TypeError, and never a sequence;
-- `x.m` becomes `$attr(x, 'm')`, f-strings `$len(f'...')`, displays with `*x` `$len([...])`;
+- `x.m` becomes `$attr(x, 'm')`, a store or del `x.m = v` `$fields(x, 'm')['m'] = v` (the rule is
+  attributes.py's), f-strings `$len(f'...')`, displays with `*x` `$len([...])`;
 - f-string format specs: a constant one has numbers of at most three digits, a computed one is
   checked when it runs (`$fstr`);
 - every `except` handler starts with `$caught(<the exception>)`, which raises budget stops and
@@ -23,6 +24,7 @@ import ast
 
 from .allowed import ATTRIBUTES, DENIED, FIELDS, PROVIDED
 from .budget import Forbidden
+from .classes import DEFINABLE, READABLE, mangle_private
 from .formatting import LONG_NUMBER, SPEC_DIGITS
 from .modules import MEMBERS, refusal
 
@@ -42,17 +44,21 @@ def fail(node, text: str):
 class Walk:
     """What one walk has seen: names the program binds, builtins it reads that are not there."""
 
-    __slots__ = ("stored", "denied")
+    __slots__ = ("stored", "denied", "methods", "reads", "strings", "modules")
 
     def __init__(self):
-        self.stored: set[str] = set()
+        self.stored: set[str] = set()  # names bound, attributes stored
         self.denied: dict[str, ast.AST] = {}
+        self.methods: set[int] = set()  # the def nodes of a class body that define DEFINABLE dunders
+        self.reads: dict[str, ast.AST] = {}  # attributes read that the sandbox does not offer
+        self.strings: list[str] = []  # the string constants (their words may name namedtuple fields)
+        self.modules: dict[str, str] = {}  # name bound by an import -> module
 
 
 def check_name(node, name: str, store: bool, walk: Walk):
     if name[0] == "$":  # ours: no Python source can spell it
         return
-    if name[0] == "_" and name[:2] == "__":
+    if name[0] == "_" and name[:2] == "__" and (store or name != "__name__"):
         fail(node, f"names starting with two underscores reach the interpreter: {name}")
     if store:
         if name in PROVIDED:
@@ -95,8 +101,22 @@ def _r_keyword(n, walk):
 
 
 def _r_function(n, walk):
-    check_name(n, n.name, True, walk)
+    if id(n) not in walk.methods:
+        check_name(n, n.name, True, walk)
     n.body.insert(0, _tick(n.body[0]))
+
+
+def _r_class(n, walk):
+    """A class statement (classes.py builds it): no keywords, `object` as a base is implied,
+    and its methods may define the DEFINABLE dunders."""
+    check_name(n, n.name, True, walk)
+    if n.keywords:
+        fail(n, f"class {n.name}: class keywords (metaclass=...) are not allowed (a metaclass reaches the interpreter)")
+    n.bases = [b for b in n.bases if not (type(b) is ast.Name and b.id == "object" and "object" not in walk.stored)]
+    for statement in n.body:
+        if type(statement) is ast.FunctionDef and statement.name in DEFINABLE:
+            walk.methods.add(id(statement))
+    mangle_private(n)
 
 
 def _r_loop(n, walk):
@@ -149,11 +169,12 @@ def _r_import(n, walk):
         if alias.name not in MEMBERS:
             fail(n, refusal(alias.name))
         check_name(n, (alias.asname or alias.name).partition(".")[0], True, walk)
+        walk.modules[alias.asname or alias.name] = alias.name
 
 
 def _r_import_from(n, walk):
     module = n.module or ""
-    if n.level or module not in MEMBERS:
+    if n.level or module not in MEMBERS or (module == "__future__" and n.names[0].name != "annotations"):
         fail(n, refusal("." * n.level + module))
     for alias in n.names:
         if alias.name == "*":
@@ -169,21 +190,27 @@ RULES = {
     A.arg: _r_arg, A.keyword: _r_keyword, A.FunctionDef: _r_function,
     A.For: _r_loop, A.While: _r_loop, A.Lambda: _r_lambda, A.comprehension: _r_comprehension,
     A.FormattedValue: _r_formatted, A.ExceptHandler: _r_handler, A.Global: _r_scope, A.Nonlocal: _r_scope,
-    A.Import: _r_import, A.ImportFrom: _r_import_from,
+    A.Import: _r_import, A.ImportFrom: _r_import_from, A.ClassDef: _r_class,
 }
 
 
 # --- wraps: a child replaced by its instrumented form -----------------------------------------
 
-def _w_attribute(n, wrapped):
+def _w_attribute(n, wrapped, walk):
+    """attributes.py's rule, before running: reads become $attr(x, 'm'), stores (and dels)
+    $fields(x, 'm')['m']; a name the sandbox does not offer must be one the program defines
+    (checked at the end of the walk: instrument.py)."""
+    name = n.attr
+    if name[:2] == "__" and ((name not in DEFINABLE and name not in READABLE) or type(n.ctx) is not ast.Load):
+        fail(n, f"attributes starting with two underscores reach the interpreter: .{name}")
+    key = _loc(ast.Constant(name), n)
+    wrapped.add(id(key))  # ours: not one of the program's strings (Walk.strings)
     if type(n.ctx) is not ast.Load:
-        fail(n, f"assigning to an attribute (.{n.attr}) is not allowed")
-    if n.attr[0] == "_":
-        fail(n, f"attributes starting with an underscore reach the interpreter: .{n.attr}")
-    if n.attr not in ATTRIBUTES:
-        fail(n, f"attribute .{n.attr} is not available in the sandbox (only the common methods of "
-                f"str, list, dict, set and tuple, and the members of the allowed modules)")
-    return _call("$attr", [n.value, _loc(ast.Constant(n.attr), n)], n)
+        walk.stored.add(name)
+        return _loc(ast.Subscript(_call("$fields", [n.value, key], n), key, n.ctx), n)
+    if name not in ATTRIBUTES and name[:2] != "__" and (name not in walk.reads or type(n.value) is ast.Name):
+        walk.reads[name] = n  # (a module's name as the owner makes the clearer message)
+    return _call("$attr", [n.value, key], n)
 
 
 def _small_number(node) -> bool:
@@ -195,7 +222,7 @@ def _small_number(node) -> bool:
     return t is float or (t is int and -(1 << 64) < node.value < (1 << 64))
 
 
-def _w_binop(n, wrapped):
+def _w_binop(n, wrapped, walk):
     op = type(n.op)
     helper = CHECKED_OPS.get(op)
     if helper is None or (op is ast.Add and (_small_number(n.right) or _small_number(n.left))):
@@ -203,10 +230,10 @@ def _w_binop(n, wrapped):
     return _call(helper, [n.left, n.right], n)
 
 
-def _w_augassign(n, wrapped):
+def _w_augassign(n, wrapped, walk):
+    if type(n.target) is ast.Attribute:  # obj.m op= v: on $fields(obj, 'm')['m']
+        n.target = _w_attribute(n.target, wrapped, walk)
     target, op = n.target, type(n.op)
-    if type(target) is ast.Attribute:
-        fail(n, f"assigning to an attribute (.{target.attr}) is not allowed")
     helper = INPLACE_OPS.get(op)
     if helper is None or (op is ast.Add and _small_number(n.value)):
         return n
@@ -224,21 +251,21 @@ def _w_augassign(n, wrapped):
 
 
 # a node wrapped in $len is visited again as the wrapper's argument: `wrapped` remembers it
-def _w_joined(n, wrapped):
+def _w_joined(n, wrapped, walk):
     if id(n) in wrapped:
         return n
     wrapped.add(id(n))
     return _call("$len", [n], n)
 
 
-def _w_display(n, wrapped):
+def _w_display(n, wrapped, walk):
     if type(getattr(n, "ctx", _LOAD)) is not ast.Load or ast.Starred not in map(type, n.elts) or id(n) in wrapped:
         return n
     wrapped.add(id(n))
     return _call("$len", [n], n)
 
 
-# every wrap, called as wrap(node, wrapped)
+# every wrap, called as wrap(node, wrapped, walk)
 WRAPS = {
     A.Attribute: _w_attribute, A.BinOp: _w_binop, A.AugAssign: _w_augassign,
     A.JoinedStr: _w_joined, A.List: _w_display, A.Tuple: _w_display, A.Set: _w_display,
@@ -252,7 +279,7 @@ def _is_list_field(t: type, field: str) -> bool:
     return field in {
         "body", "targets", "orelse", "values", "elts", "keys", "generators", "comparators",
         "keywords", "ifs", "posonlyargs", "kwonlyargs", "kw_defaults", "defaults", "handlers", "finalbody",
-        "decorator_list",
+        "decorator_list", "bases",
     } or (field == "args" and t in (A.Call, A.arguments))
 
 

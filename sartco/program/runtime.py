@@ -1,11 +1,11 @@
 """Run one prepared program on a fresh board, inside the worker process.
 
-The program's globals are `board`, `put`, `init_board`; its `__builtins__` is BUILTINS (no
+The program's globals (namespace()) are `__name__`, `board`, `put`, `init_board`; its `__builtins__` is BUILTINS (no
 program can reach the dict, so one serves them all; `$t` is set per program): the allowed
 builtins (some with budgets: `range`, `round`, `sum`, `pow` in budget.py, `int`, `str`, `repr`,
 `ascii` in conversions.py, `format` in formatting.py; `print` does nothing), a refusing
 stand-in for every other builtin name (calling it is `forbidden`), `__import__` for the
-stand-in modules (modules.py), and the `$` helpers that nodes.py inserts. The result board is
+stand-in modules (modules.py), `__build_class__` for class statements (records.py), and the `$` helpers that nodes.py inserts. The result board is
 the global `board` if it is a Board, else the most recently created board. Every outcome is
 turned into `[ok, code, message, cells, puts]`, the message cleaned (execution.clean).
 
@@ -35,31 +35,16 @@ from .allowed import ALLOWED_BUILTINS, DENIED
 from .budget import Forbidden, Limit
 from .execution import clean, not_a_str
 from .instrument import prepare
-from .methods import CHECKED_METHODS, TYPE_METHODS
-from .modules import Module, import_module
+from . import attributes, chance
+from .classes import SERIALS
+from .records import build_class
+from .modules import import_module
 
 E = ErrorCode
 MESSAGE_CHARS = 400
 CACHE_SIZE = 4096
 SPOILED = False  # set when this worker must not run another program (the worker then exits)
 _STEPS = repeat(True, 0)  # the current program's step counter
-
-
-def _attr(obj, name):
-    t = type(obj)
-    if t is Module:
-        try:
-            return obj.__dict__[name]
-        except KeyError:
-            raise AttributeError(f"module {obj.__dict__['__name__']!r} has no attribute {name!r} in the sandbox") from None
-    allowed = TYPE_METHODS.get(t)
-    if allowed is None:
-        raise Forbidden(f".{name} is allowed only on str, list, dict, set, tuple and the allowed modules, "
-                        f"not on {t.__name__}")
-    if name not in allowed:
-        raise AttributeError(f"'{t.__name__}' object has no attribute '{name}'")
-    checked = CHECKED_METHODS.get(name)
-    return getattr(obj, name) if checked is None else checked(obj)
 
 
 def _caught(exc):
@@ -96,10 +81,11 @@ BUILTINS = {
     **{name: _Refused(name) for name in DENIED},
     **{name: _OWN.get(name) or getattr(builtins, name) for name in ALLOWED_BUILTINS},
     "__import__": import_module,  # what import statements call; no program can spell the name
+    "__build_class__": build_class,  # what class statements call (classes.py)
     "$add": budget.add, "$mul": budget.mul, "$pow": budget.power, "$lshift": budget.lshift, "$mod": formatting.mod,
     "$iadd": budget.iadd, "$imul": budget.imul, "$ipow": budget.power, "$ilshift": budget.lshift,
     "$imod": formatting.mod, "$iitem": budget.iitem, "$slice": slice, "$len": budget.checked_len,
-    "$attr": _attr, "$caught": _caught, "$fstr": formatting.fstring_field,
+    "$attr": attributes.read, "$fields": attributes.fields, "$caught": _caught, "$fstr": formatting.fstring_field,
 }
 
 # --- compile (cached by exact source text: the verdict and code object depend on nothing else) --
@@ -200,6 +186,16 @@ def _depth() -> int:
     return n
 
 
+def namespace(board, init_board, name: str = "__main__") -> dict:
+    """The globals of one program, a fresh module named `name` (`__main__`: a script, so
+    `if __name__ == "__main__":` runs): `board`, `put`, `init_board` and the sandbox's builtins.
+    A new program also starts the `random` stand-in and the default hashes of its objects
+    afresh (chance.py, classes.serial_hash)."""
+    chance.fresh()
+    SERIALS.clear()
+    return {"__builtins__": BUILTINS, "__name__": name, "board": board, "put": put, "init_board": init_board}
+
+
 def run(compiled: tuple, rows: int, cols: int, limits) -> list:
     """Run one program, given what compile_program made of it; return [ok, code or None,
     message, cells, puts]. The message is clean (execution.clean). A budget stop, a MemoryError or
@@ -221,7 +217,7 @@ def run(compiled: tuple, rows: int, cols: int, limits) -> list:
     budget.LENGTH, budget.INT_BITS, budget.STOPPED = limits.length, limits.int_bits, None
     _STEPS = steps = repeat(True, limits.steps)
     BUILTINS["$t"] = steps.__next__  # no program can reach the dict: one serves them all
-    env = {"__builtins__": BUILTINS, "board": board, "put": put, "init_board": init_board}
+    env = namespace(board, init_board)
     old_limit = sys.getrecursionlimit()
     error = None
     try:
@@ -243,6 +239,7 @@ def run(compiled: tuple, rows: int, cols: int, limits) -> list:
         if type(result_board) is not Board:
             result_board = last[0]
         env.clear()
+        SERIALS.clear()  # (the program's objects go with it)
         cells, puts = result_board.cells(), result_board.puts
         message = clean(message)
     except MemoryError:

@@ -25,10 +25,16 @@ def _fail(code: ErrorCode, message: str):
     raise WorldError(code, message)
 
 
+def _shown(value) -> str:
+    """A value in a message: its repr if it is one of Python's own types, else its type's name
+    (a program's object would show its address, and its own code, in the verdict)."""
+    return f"{value!r:.40}" if type(value).__module__ == "builtins" else f"<{type(value).__name__} object>"
+
+
 def _bad_coordinates(x, y):
     for name, value in (("x", x), ("y", y)):
         if type(value) is not int:
-            _fail(E.TYPE_ERROR, f"{name} must be an integer, got {type(value).__name__} {value!r:.40}")
+            _fail(E.TYPE_ERROR, f"{name} must be an integer, got {type(value).__name__} {_shown(value)}")
 
 
 def check(board: Board, shape, color, x, y) -> int | None:
@@ -66,13 +72,14 @@ def check(board: Board, shape, color, x, y) -> int | None:
             if stacks[second][-1][0] in NOTHING_ON_TOP:
                 _fail(E.NOT_ON_TOP_OF_SCREW, f"cell ({x2}, {y2}) has a {stacks[second][-1][0]} on top; nothing goes on a screw")
         elif top == shape:
-            _fail(E.SAME_SHAPE_STACKING, f"{shape} directly on a {shape} at ({x}, {y})")
+            _fail(E.SAME_SHAPE_STACKING, f"{top} directly on a {top} at ({x}, {y})")  # top: the board's str
         elif height >= 2 and anchor[-2][0] == shape:
-            _fail(E.SAME_SHAPE_AT_ALTERNATE_LEVELS, f"{shape} two levels above a {shape} at ({x}, {y})")
-    if shape not in SHAPES:
-        _fail(E.KEY_ERROR, f"unknown shape {shape!r:.40}; expected one of {', '.join(SHAPES)}")
-    if color not in COLORS:
-        _fail(E.KEY_ERROR, f"unknown colour {color!r:.40}; expected one of {', '.join(COLORS)}")
+            below = anchor[-2][0]
+            _fail(E.SAME_SHAPE_AT_ALTERNATE_LEVELS, f"{below} two levels above a {below} at ({x}, {y})")
+    if type(shape) is not str or shape not in SHAPES:  # exact str: a program's object may claim equality
+        _fail(E.KEY_ERROR, f"unknown shape {_shown(shape)}; expected one of {', '.join(SHAPES)}")
+    if type(color) is not str or color not in COLORS:
+        _fail(E.KEY_ERROR, f"unknown colour {_shown(color)}; expected one of {', '.join(COLORS)}")
     return second
 
 

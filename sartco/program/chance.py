@@ -1,0 +1,58 @@
+"""The `random` stand-in: CPython's own generator (Mersenne Twister), one per program.
+
+`import random` gives functions bound to the current program's generator (SHARED, replaced by
+runtime.namespace for every program), `random.Random(n)` a generator of the program's own; both
+produce exactly CPython's sequence for the same seed (`seed`, `random`, `randint`, `randrange`,
+`choice`, `choices`, `shuffle`, `sample`, `uniform`, `gauss`, ...). Unseeded, the generator is
+seeded with 0 (CPython seeds from the operating system): the same program gives the same board
+in every worker and every run, never a board of chance; `random.seed()` without an argument
+does the same. `sample` and `choices` keep the length budget. No state, `getrandbits` or
+`randbytes`: nothing outside the sequence.
+"""
+from __future__ import annotations
+
+import random as _random
+
+from . import budget
+from .budget import too_long
+
+RANDOM_METHODS = frozenset({"seed", "random", "randint", "randrange", "choice", "choices", "shuffle", "sample",
+                            "uniform", "gauss", "normalvariate", "triangular", "expovariate", "betavariate"})
+UNSEEDED = 0
+
+
+class SeededRandom(_random.Random):
+    """random.Random, seeded with UNSEEDED instead of the operating system's entropy."""
+
+    def seed(self, a=None, version=2):
+        super().seed(UNSEEDED if a is None else a, version)
+
+    def sample(self, population, k, *, counts=None):
+        if type(k) is int and k > budget.LENGTH:
+            too_long(k)
+        return super().sample(population, k, counts=counts)
+
+    def choices(self, population, weights=None, *, cum_weights=None, k=1):
+        if type(k) is int and k > budget.LENGTH:
+            too_long(k)
+        return super().choices(population, weights, cum_weights=cum_weights, k=k)
+
+
+SHARED = [None]  # the current program's generator, behind the module's functions (made at first use)
+
+
+def fresh():
+    """A new program starts: the module's generator starts from the unseeded state."""
+    SHARED[0] = None
+
+
+def _bound(name):
+    def function(*args, **kwargs):
+        if SHARED[0] is None:
+            SHARED[0] = SeededRandom()
+        return getattr(SHARED[0], name)(*args, **kwargs)
+    function.__name__ = name
+    return function
+
+
+MEMBERS = {**{name: _bound(name) for name in RANDOM_METHODS}, "Random": SeededRandom}

@@ -1,0 +1,86 @@
+"""Records a program may define: `@dataclass`, `collections.namedtuple` and `typing.NamedTuple`.
+
+All three make classes of the program (classes.ProgramClass), with what the standard library
+makes of them: dataclasses' own `__init__`/`__repr__`/`__eq__` (and order, frozen), the
+namedtuple's tuple, fields, `_asdict`, `_replace`, `_make`. Only program classes are decorated;
+a namedtuple's names are checked by collections itself (identifiers, no leading underscore).
+`dataclasses.fields()` is not offered: its Field objects are the class's internals.
+"""
+from __future__ import annotations
+
+import builtins
+import collections
+import dataclasses
+
+from .budget import Forbidden
+from .classes import EXCEPTION_TYPES, ProgramClass, make
+
+_OPTIONS = frozenset({"init", "repr", "eq", "order", "unsafe_hash", "frozen", "kw_only", "match_args"})
+
+
+def dataclass(cls=None, /, **options):
+    """`@dataclass` and `@dataclass(frozen=True, ...)` on the program's own classes."""
+    unknown = set(options) - _OPTIONS
+    if unknown:
+        raise Forbidden(f"dataclass({', '.join(sorted(unknown))}=...) is not available in the sandbox")
+
+    def wrap(klass):
+        if type(klass) is not ProgramClass:
+            raise TypeError("dataclass() decorates a class of the program")
+        return dataclasses.dataclass(klass, **options)
+    return wrap if cls is None else wrap(cls)
+
+
+def _record(typename, base, methods: dict):
+    return make(typename, (base,), {**methods, "__slots__": (), "__module__": "__main__", "__qualname__": typename})
+
+
+def namedtuple(typename, field_names, *, rename=False, defaults=None):
+    base = collections.namedtuple(typename, field_names, rename=rename, defaults=defaults, module="__main__")
+    return _record(typename, base, {})
+
+
+def NamedTuple(typename, fields=None, /, **kwargs):  # noqa: N802 - typing's name
+    """typing.NamedTuple's functional form; as a base, classes.build_class calls named_record."""
+    pairs = list(fields) if fields is not None else list(kwargs.items())
+    return namedtuple(typename, [name for name, _ in pairs])
+
+
+def named_record(typename: str, namespace: dict):
+    """`class P(NamedTuple): x: int; y: int = 0` (and its methods), as typing makes it."""
+    names = list(namespace.get("__annotations__", {}))
+    defaults = [namespace[name] for name in names if name in namespace]
+    if any(name not in namespace for name in names[len(names) - len(defaults):]):
+        raise TypeError(f"Non-default namedtuple field follows default field in {typename}")
+    methods = {k: v for k, v in namespace.items() if k not in names and k not in ("__module__", "__qualname__")}
+    base = collections.namedtuple(typename, names, defaults=defaults or None, module="__main__")
+    return _record(typename, base, methods)
+
+
+def _capture(name, bases, namespace):
+    return namespace
+
+
+def build_class(body, name, *bases, **keywords):
+    """The `__build_class__` of a program's class statements (classes.py says what it allows)."""
+    if keywords:
+        raise Forbidden(f"class {name}: class keywords ({', '.join(keywords)}) are not allowed "
+                        f"(a metaclass reaches the interpreter)")
+    for base in bases:
+        if base is NamedTuple:
+            if len(bases) > 1:
+                raise Forbidden(f"class {name}: a NamedTuple has no other base")
+        elif type(base) is not ProgramClass and base not in EXCEPTION_TYPES:
+            raise Forbidden(f"class {name}: a class may derive only from the program's own classes, the "
+                            f"exception classes and typing.NamedTuple, not from {base!r:.60}")
+    namespace = builtins.__build_class__(body, name, metaclass=_capture)
+    if bases and bases[0] is NamedTuple:
+        return named_record(name, namespace)
+    return make(name, bases, namespace)
+
+
+MEMBERS = {
+    "dataclasses": {"dataclass": dataclass, "field": dataclasses.field, "asdict": dataclasses.asdict,
+                    "astuple": dataclasses.astuple, "replace": dataclasses.replace,
+                    "is_dataclass": dataclasses.is_dataclass, "FrozenInstanceError": dataclasses.FrozenInstanceError},
+}
