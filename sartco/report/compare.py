@@ -34,7 +34,8 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 
 def mcnemar_p(b: int, c: int) -> float:
-    """Exact two-sided McNemar p-value from the discordant counts b and c."""
+    """Exact two-sided McNemar p-value from the discordant counts b and c (exact as a fraction; a
+    value below a float's range, e.g. 2 * 2**-1264, becomes 0.0, shown "< 1e-300" in compare.md)."""
     n = b + c
     if n == 0:
         return 1.0
@@ -90,7 +91,7 @@ def run(args: argparse.Namespace) -> int:
     shown = ["game", "experiment", "episodes"] + [f"Δ{m.upper()}" for m in intervals.RATES] + ["only A", "only B", "McNemar p"]
     body = [[r["game"], r["experiment"], r["episodes"]]
             + [intervals.shown({k[2:]: v for k, v in r.items() if k.startswith("d_")}, m) for m in intervals.RATES]
-            + [r["es_only_a"], r["es_only_b"], f"{r['mcnemar_p']:.4g}"] for r in rows]
+            + [r["es_only_a"], r["es_only_b"], f"{r['mcnemar_p']:.4g}" if r["mcnemar_p"] else "< 1e-300"] for r in rows]
     md = (f"# {args.a} - {args.b} on the same episodes\n\nDifferences in percentage points, each `x [lo, hi]` with its "
           "95 % paired bootstrap interval; only A / only B = episodes only that model executed successfully; "
           "McNemar p = exact two-sided test on those discordant pairs (execution success).\n\n" + markdown_table(shown, body))
