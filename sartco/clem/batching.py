@@ -39,7 +39,7 @@ from clemcore.backends import BatchGenerativeModel, ModelSpec
 from clemcore.backends.openai_api import OpenAI, OpenAIModel
 from clemcore.backends.utils import augment_response_object, ensure_messages_format
 
-from .outcomes import NoAnswer
+from .outcomes import NO_ANSWER, NoAnswer
 from .response_cache import ResponseCache
 
 log = logging.getLogger(__name__)
@@ -116,7 +116,7 @@ class BatchingOpenAIModel(OpenAIModel, BatchGenerativeModel):
                   "request aborted", self.name, type(error).__name__, tries, spent, self.timeout,
                   self.retries, self.retry_budget)
         what = "no answer" if isinstance(error, openai.APITimeoutError) else f"{type(error).__name__} ({error})"
-        answer = NoAnswer(f"model server: {what} after {tries} {'try' if tries == 1 else 'tries'} in {spent:.0f} s "
+        answer = NoAnswer(f"{NO_ANSWER}{what} after {tries} {'try' if tries == 1 else 'tries'} in {spent:.0f} s "
                           f"(timeout {self.timeout:g} s)")
         return messages, {"error": answer.reason, "clem_player": {"response": "", "model_name": self.name}}, answer
 

@@ -31,6 +31,9 @@ class HarnessFault(Exception):
         self.reason = reason
 
 
+NO_ANSWER = "model server: "  # how the reason of a NoAnswer begins (sartco resume plays such episodes again)
+
+
 class NoAnswer(str):
     """The answer of a request the model server never answered (sartco.clem.batching gave up:
     timeouts, 5xx or other API errors after its retries): empty text that carries the reason.

@@ -4,6 +4,7 @@ ends every request (retried, then aborted, logged) and every episode is recorded
 with the reason, sequential and batched (issue 21), and a server failing some requests spoils
 only their episodes."""
 import json
+import os
 import re
 import subprocess
 import sys
@@ -87,6 +88,15 @@ def test_a_hung_server_gives_recorded_harness_errors_and_the_run_goes_on(tmp_pat
     assert "4 harness error(s)" in done.stderr
     assert "| stub | cobot_instruct | 4 | 4 | model server: no answer after 2 tries" in (
         tmp_path / "scores" / "harness.md").read_text()
+    if batch == 4:   # the server is back: `sartco resume` plays the unanswered episodes again
+        games = [i for e in benchrun.select_instances(EXPERIMENTS, 2)["experiments"] for i in e["game_instances"]]
+        with StubServer(answer_table(games), latency=0.0) as server:
+            benchrun.write_scratch(tmp_path, server.base_url, "openai_batching", 4)
+            done = subprocess.run([sys.executable, "-m", "sartco", "resume", "-r", str(tmp_path / "results"), "-g",
+                                   benchrun.GAME, "-m", benchrun.MODEL, "-b", "4"], cwd=tmp_path, capture_output=True,
+                                  text=True, timeout=300, env=dict(os.environ, CLEMBENCH_HOME=str(benchrun.GAME_DIR.parents[1])))
+        assert done.returncode == 0 and "4 to play" in done.stdout, done.stdout[-2000:] + done.stderr[-2000:]
+        assert [s["Main Score"] for s in episodes_of(tmp_path / "results").values()] == [100.0] * 4
 
 
 def test_a_server_failing_some_requests_spoils_only_their_episodes(tmp_path):
