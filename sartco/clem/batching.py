@@ -39,6 +39,7 @@ from clemcore.backends import BatchGenerativeModel, ModelSpec
 from clemcore.backends.openai_api import OpenAI, OpenAIModel
 from clemcore.backends.utils import augment_response_object, ensure_messages_format
 
+from .outcomes import NO_ANSWER, NoAnswer
 from .response_cache import ResponseCache
 
 log = logging.getLogger(__name__)
@@ -89,7 +90,8 @@ class BatchingOpenAIModel(OpenAIModel, BatchGenerativeModel):
         found = self.cache.get(key)
         if found is None:
             found = self._with_retries(messages)
-            self.cache.put(key, found)
+            if not isinstance(found[2], NoAnswer):  # a failure is never cached
+                self.cache.put(key, found)
         return found
 
     def _with_retries(self, messages: list[dict]) -> tuple[Any, Any, str]:
@@ -97,18 +99,26 @@ class BatchingOpenAIModel(OpenAIModel, BatchGenerativeModel):
         for attempt in range(self.retries + 1):
             try:
                 return _request_once(self, messages)
-            except RETRIED as error:
+            except openai.APIError as error:
                 delay = retry_delay(error, attempt, self.backoff)
                 spent = time.monotonic() - start
-                if attempt == self.retries or spent + delay > self.retry_budget:
-                    log.error("%s: %s after %d tries in %.1f s (timeout %.0f s, retries %d, retry budget %.0f s): "
-                              "request aborted", self.name, type(error).__name__, attempt + 1, spent, self.timeout,
-                              self.retries, self.retry_budget)
-                    raise
+                if not isinstance(error, RETRIED) or attempt == self.retries or spent + delay > self.retry_budget:
+                    return self._no_answer(messages, error, attempt + 1, spent)
                 log.warning("%s: %s; retry %d of %d in %.1f s", self.name, type(error).__name__,
                             attempt + 1, self.retries, delay)
                 time.sleep(delay)
         raise AssertionError("unreachable")
+
+    def _no_answer(self, messages: list[dict], error: openai.APIError, tries: int, spent: float) -> tuple[Any, Any, str]:
+        """The request given up: logged, and answered by a NoAnswer that carries the reason (the
+        game master records the episode as harness_error; the model is not charged)."""
+        log.error("%s: %s after %d tries in %.1f s (timeout %.0f s, retries %d, retry budget %.0f s): "
+                  "request aborted", self.name, type(error).__name__, tries, spent, self.timeout,
+                  self.retries, self.retry_budget)
+        what = "no answer" if isinstance(error, openai.APITimeoutError) else f"{type(error).__name__} ({error})"
+        answer = NoAnswer(f"{NO_ANSWER}{what} after {tries} {'try' if tries == 1 else 'tries'} in {spent:.0f} s "
+                          f"(timeout {self.timeout:g} s)")
+        return messages, {"error": answer.reason, "clem_player": {"response": "", "model_name": self.name}}, answer
 
 
 def retry_delay(error: Exception, attempt: int, backoff: float) -> float:

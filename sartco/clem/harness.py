@@ -1,13 +1,15 @@
 """Harness faults are never the model's error: the one place per path where they are caught.
 
-A harness fault is anything the model did not cause: the sandbox could not run the program or
-gave no usable answer (ErrorCode.HARNESS_ERROR from sartco.program, raised as HarnessFault by
+A harness fault is anything the model did not cause: the model server gave no answer (the
+backend's retries given up: a `NoAnswer`, sartco.clem.batching), the sandbox could not run the
+program or gave no usable answer (ErrorCode.HARNESS_ERROR from sartco.program, raised as HarnessFault by
 sartco.clem.building.build_for and sartco.clem.paper.finish_paper), or the game master or the
 scorer raised. Such an episode is recorded with its reason and counts as not played:
 - playing (`HarnessGuard`, the first base of both game masters): an exception in a step ends the
   episode at once with a `harness_error` build record (its reason as the message) under
   BUILD_KEY, a board event for the transcript, Aborted 1 (clemcore: not played) and the
-  interactions.json written as usual;
+  interactions.json written as usual; a `NoAnswer` answer takes the same path before the game
+  master sees it (the turn's messages and the request logged as clemcore's step logs them; no parse);
 - scoring (`sartco.clem.scoring.BuildScorer.compute_scores`, every scorer's base): an exception
   replaces the episode's scores with `harness_scores`: Main Score and the build scores NaN,
   Aborted 1, Error Category harness_error, its reason under HARNESS_REASON.
@@ -26,7 +28,7 @@ from sartco.program.execution import clean
 from sartco.world import ErrorCode
 
 from .building import end_build, log_build, parse_failure_for
-from .outcomes import HarnessFault, log_outcome
+from .outcomes import HarnessFault, NoAnswer, log_outcome
 
 REASON_CHARS = 500
 HARNESS = ErrorCode.HARNESS_ERROR
@@ -53,6 +55,11 @@ class HarnessGuard:
 
     def step(self, response):
         try:
+            if isinstance(response, NoAnswer):  # the model server gave none: the model is not charged
+                self.log_gm_to_player(self.get_context_for(self.current_player), self.current_player)
+                self.log_player_to_gm(response, self.current_player)  # as clemcore's step: the turn's
+                self.count_request()                                  # messages, a request (not parsed)
+                raise HarnessFault(response.reason)
             return super().step(response)
         except Exception as exc:  # noqa: BLE001 - a fault of the game master or the sandbox, never the model's
             record = parse_failure_for(self.harness_instance, fault_reason("game master", exc), error=HARNESS)

@@ -31,6 +31,22 @@ class HarnessFault(Exception):
         self.reason = reason
 
 
+NO_ANSWER = "model server: "  # how the reason of a NoAnswer begins (sartco resume plays such episodes again)
+
+
+class NoAnswer(str):
+    """The answer of a request the model server never answered (sartco.clem.batching gave up:
+    timeouts, 5xx or other API errors after its retries): empty text that carries the reason.
+    The model did not answer, so it is never charged: the game master (sartco.clem.harness.
+    HarnessGuard) records the episode as harness_error with this reason. A str, so it travels
+    through clemcore's Player, batch runner and GameMasterEnv unchanged."""
+
+    def __new__(cls, reason: str):
+        text = super().__new__(cls, "")
+        text.reason = reason
+        return text
+
+
 def outcome_for(category: str | ErrorCode | None) -> Outcome:
     """The clemcore outcome of an episode whose final build has this category (None = success)."""
     family = category_family(category)

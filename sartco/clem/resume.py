@@ -4,26 +4,29 @@ interrupted run in place.
 clemcore has no resume; its results folder has one folder per episode (results/<model-pair>/
 <game>/<experiment>/instance_<game_id>), so the episodes still to do are known
 (sartco.clem.completeness). Resume plays exactly the missing and errored episodes (and those
-whose interactions.json is unreadable) through clemcore's own `run` with an instance filter, into
-the same folder and under the same episode ids, then scores them and the played-but-unscored
-ones (as `clem score` does; nothing else is played again or rescored). The instance file is
+whose interactions.json is unreadable, and the harness_error ones the model server gave no answer
+to) through clemcore's own `run` with an instance filter, into the same folder and under the
+same episode ids, then scores them and the played-but-unscored ones (as `clem score` does; nothing else is played again or rescored). The instance file is
 run.json's (sartco.clem.provenance); `-t` / `-l` default to run.json's generation settings.
 
 Exit status: 0 when the folder is complete afterwards (also when nothing was to do); 2 when it
 refuses (no such results folder, the instance file changed since the first run, runs of
 different instance files in one folder); 3 (sartco.clem.completeness.INCOMPLETE_STATUS) when
-episodes are still not scored afterwards (e.g. the model server failed again).
+episodes are still not scored afterwards, or the model server again gave no answer to some.
 """
 from __future__ import annotations
 
 import argparse
+import json
 import shutil
 from pathlib import Path
 
+from sartco.episode import HARNESS_REASON
 from sartco.errors import UserError
 
 from . import provenance
 from .completeness import INCOMPLETE_STATUS, Unverifiable, check_game, episode_folder, needs_play
+from .outcomes import NO_ANSWER
 
 
 def configure(parser: argparse.ArgumentParser) -> None:
@@ -47,6 +50,22 @@ def run_folder(models: list[str]) -> str:
     return Model.to_identifier([type("Named", (), {"__str__": lambda self, n=s.model_name: n})() for s in specs])
 
 
+def unanswered(game_dir: Path, problems: list[dict]) -> list[dict]:
+    """The scored episodes that are harness_error because the model server gave no answer (a
+    NoAnswer: sartco.clem.outcomes): played again, as a missing episode is."""
+    known = {(p["experiment"], p["game_id"]) for p in problems}
+    out = []
+    for path in sorted(Path(game_dir).glob("*/instance_*/scores.json")):
+        try:
+            reason = json.loads(path.read_text(encoding="utf-8"))["episode scores"].get(HARNESS_REASON)
+        except (OSError, ValueError, KeyError, AttributeError):
+            continue  # an unreadable scores.json is a problem of its own (completeness)
+        key = (path.parent.parent.name, int(path.parent.name.split("_")[-1]))
+        if isinstance(reason, str) and reason.startswith(NO_ANSWER) and key not in known:
+            out.append({"experiment": key[0], "game_id": key[1], "problem": "no answer"})
+    return out
+
+
 def _problems(game_dir: Path):
     try:
         expected, problems, run = check_game(game_dir)
@@ -65,7 +84,7 @@ def run(args: argparse.Namespace) -> int:
         raise UserError(f"{game_dir}: no such folder (nothing was played for this game and model; use clem run)")
     expected, problems, run_json = _problems(game_dir)
     instance_path, _ = provenance.played_instance_file(game_dir, run_json)
-    replay = [p for p in problems if needs_play(game_dir, p)]
+    replay = [p for p in problems if needs_play(game_dir, p)] + unanswered(game_dir, problems)
     rescore = [p for p in problems if p not in replay]
     print(f"sartco resume: {game_dir}: {expected} episodes in {instance_path.name}, {len(replay)} to play, "
           f"{len(rescore)} to score" + ("" if run_json else " (no run.json: the game's default instance file)"))
@@ -79,7 +98,7 @@ def run(args: argparse.Namespace) -> int:
         provenance.RESUMING = (args.results, len(replay))
         try:
             clem_cli.run(args.game, ModelSpec.from_strings(args.models), gen_args=gen_args,
-                         instances_filename=instance_path.stem, results_dir_path=args.results,
+                         instances_filename=str(instance_path.with_suffix("")), results_dir_path=args.results,
                          batch_size=args.batch_size,
                          instances_filter=lambda row: (row["experiment"]["name"], row["game_instance"]["game_id"]) in wanted)
         except SystemExit:  # clemcore exits 1 after logging an episode's exception; the check below tells
@@ -97,6 +116,12 @@ def run(args: argparse.Namespace) -> int:
     if left:
         print(f"sartco resume: still {len(left)} of {expected} episodes not scored (first: {left[0]['experiment']} "
               f"game_id {left[0]['game_id']}: {left[0]['problem']}); run sartco resume again", flush=True)
+        return INCOMPLETE_STATUS
+    still = unanswered(game_dir, [])
+    if still:
+        print(f"sartco resume: the model server gave no answer again to {len(still)} of {expected} episodes "
+              f"(harness_error; first: {still[0]['experiment']} game_id {still[0]['game_id']}); run sartco resume again",
+              flush=True)
         return INCOMPLETE_STATUS
     print(f"sartco resume: {game_dir}: all {expected} episodes scored")
     return 0

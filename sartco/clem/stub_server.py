@@ -10,6 +10,8 @@ tests: it answers `POST /v1/chat/completions` from the episodes' gold code after
 - `intervals` records (start, end) of every answered request (time.monotonic), from which
   `busy_time` (the union: time with at least one request in flight) follows.
 - `fail_first`: the first n requests get 500 (for the backend's retry test).
+- `failing`: conversation keys (`conversation_key` of its user messages) whose every request gets
+  500, the others are answered (a server that fails some requests only).
 - `hang`: every request is counted and then never answered until the server stops (a hung
   model server, for the backend's timeout test); `requests` counts every request that arrived.
 """
@@ -42,10 +44,11 @@ def answer_table(game_instances) -> dict[str, str]:
 
 class StubServer:
     def __init__(self, answers: dict[str, str], *, latency: float = 0.5, max_requests: int = 10_000,
-                 max_seconds: float = 1800.0, fail_first: int = 0, hang: bool = False):
+                 max_seconds: float = 1800.0, fail_first: int = 0, hang: bool = False,
+                 failing: frozenset[str] = frozenset()):
         self.answers, self.latency = answers, latency
         self.max_requests, self.max_seconds, self.fail_first = max_requests, max_seconds, fail_first
-        self.hang = hang
+        self.hang, self.failing = hang, failing
         self.requests = 0
         self.intervals: list[tuple[float, float]] = []
         self.unknown = 0      # conversations without a gold answer
@@ -101,11 +104,13 @@ class StubServer:
             return 503, {"error": {"message": "stub server: stopped while hanging"}}
         if number <= self.fail_first:
             return 500, {"error": {"message": "stub server: a planned failure"}}
+        users = [m.get("content") for m in body.get("messages", []) if m.get("role") == "user"]
+        key = conversation_key([u if isinstance(u, str) else json.dumps(u) for u in users])
+        if key in self.failing:
+            return 500, {"error": {"message": "stub server: this conversation always fails"}}
         start = time.monotonic()
         time.sleep(self.latency)
-        users = [m.get("content") for m in body.get("messages", []) if m.get("role") == "user"]
-        users = [u if isinstance(u, str) else json.dumps(u) for u in users]
-        text = self.answers.get(conversation_key(users))
+        text = self.answers.get(key)
         if text is None:
             with self._lock:
                 self.unknown += 1
@@ -141,7 +146,10 @@ class StubServer:
                 self.send_header("Content-Type", "application/json")
                 self.send_header("Content-Length", str(len(data)))
                 self.end_headers()
-                self.wfile.write(data)
+                try:
+                    self.wfile.write(data)
+                except (BrokenPipeError, ConnectionResetError):  # the client gave up (its timeout)
+                    pass
 
             def log_message(self, *args):  # quiet
                 pass

@@ -1,11 +1,20 @@
 """The openai_batching backend in real `clem run`s against the stub server: the response cache
-serves a repeated run without a request reaching the server, and a hung server with a 2 s
-timeout ends every request (retried, then aborted, logged) instead of hanging the run."""
+serves a repeated run without a request reaching the server; a hung server with a 2 s timeout
+ends every request (retried, then aborted, logged) and every episode is recorded as harness_error
+with the reason, sequential and batched (issue 21), and a server failing some requests spoils
+only their episodes."""
 import json
+import os
+import re
+import subprocess
+import sys
 import time
 
+import pytest
+
 from sartco.clem import benchrun
-from sartco.clem.stub_server import StubServer, answer_table
+from sartco.clem.stub_server import StubServer, answer_table, conversation_key
+from sartco.report.harness_table import HARNESS_STATUS
 
 EXPERIMENTS = ["rb_so_repetition_template", "sb_so_first_order_template"]
 
@@ -41,17 +50,69 @@ def test_the_cache_serves_a_repeated_run_without_the_server(tmp_path):
     assert len(list((tmp_path / "cache").rglob("*.json"))) == asked
 
 
-def test_a_hung_server_with_a_2s_timeout_ends_the_run(tmp_path):
+def episodes_of(results) -> dict[str, dict]:
+    """Every episode folder below a results folder -> its scores.json's episode scores (NaN as None)."""
+    out = {}
+    for interactions in sorted(results.rglob("interactions.json")):
+        scores = interactions.with_name("scores.json")
+        assert scores.exists(), interactions   # every episode recorded and scored
+        out[str(interactions.parent.relative_to(results))] = json.loads(
+            scores.read_text().replace("NaN", "null"))["episode scores"]
+    return out
+
+
+def report(tmp_path, results) -> subprocess.CompletedProcess:
+    benchrun.clem(["eval", "-r", str(results)], tmp_path)   # clemcore's eval takes the recorded episodes
+    return subprocess.run([sys.executable, "-m", "sartco", "report", "-r", str(results), "--out",
+                           str(tmp_path / "scores")], cwd=tmp_path, capture_output=True, text=True, timeout=300)
+
+
+@pytest.mark.parametrize("batch", [1, 4])
+def test_a_hung_server_gives_recorded_harness_errors_and_the_run_goes_on(tmp_path, batch):
     with StubServer({}, hang=True, max_seconds=300) as server:
-        _, file = setup(tmp_path, server, timeout=2, retries=1, backoff=0.01)
+        _, file = setup(tmp_path, server, timeout=2, retries=5, backoff=0.01, retry_budget=3)
         start = time.monotonic()
-        run(tmp_path, file, "results", 1)   # sequential: each episode's request fails, the run goes on
+        run(tmp_path, file, "results", batch)   # -b 1: sequential; -b 4: the four episodes batched
         took = time.monotonic() - start
-        assert server.requests == 2 * 4       # 4 episodes, 2 tries each
+        assert server.requests == 2 * 4       # 4 episodes, 2 tries each (2 s + 2 s > the 3 s budget)
     assert took < 120, took
     log = (tmp_path / "clembench.log").read_text()
     assert log.count("request aborted") == 4 and "APITimeoutError after 2 tries" in log
-    assert not list((tmp_path / "results").rglob("scores.json"))   # no episode scored as if the model had answered
+    episodes = episodes_of(tmp_path / "results")
+    assert len(episodes) == 4
+    for s in episodes.values():   # recorded, aborted, not scored against the model (no parse_error)
+        assert (s["Error Category"], s["Aborted"], s["Main Score"]) == ("harness_error", 1, None)
+        assert re.fullmatch(r"model server: no answer after 2 tries in [45] s \(timeout 2 s\)", s["Harness Error"])
+    done = report(tmp_path, tmp_path / "results")
+    assert done.returncode == HARNESS_STATUS, done.stderr[-2000:]
+    assert "4 harness error(s)" in done.stderr
+    assert "| stub | cobot_instruct | 4 | 4 | model server: no answer after 2 tries" in (
+        tmp_path / "scores" / "harness.md").read_text()
+    if batch == 4:   # the server is back: `sartco resume` plays the unanswered episodes again
+        games = [i for e in benchrun.select_instances(EXPERIMENTS, 2)["experiments"] for i in e["game_instances"]]
+        with StubServer(answer_table(games), latency=0.0) as server:
+            benchrun.write_scratch(tmp_path, server.base_url, "openai_batching", 4)
+            done = subprocess.run([sys.executable, "-m", "sartco", "resume", "-r", str(tmp_path / "results"), "-g",
+                                   benchrun.GAME, "-m", benchrun.MODEL, "-b", "4"], cwd=tmp_path, capture_output=True,
+                                  text=True, timeout=300, env=dict(os.environ, CLEMBENCH_HOME=str(benchrun.GAME_DIR.parents[1])))
+        assert done.returncode == 0 and "4 to play" in done.stdout, done.stdout[-2000:] + done.stderr[-2000:]
+        assert [s["Main Score"] for s in episodes_of(tmp_path / "results").values()] == [100.0] * 4
+
+
+def test_a_server_failing_some_requests_spoils_only_their_episodes(tmp_path):
+    games = [i for e in benchrun.select_instances(EXPERIMENTS, 2)["experiments"] for i in e["game_instances"]]
+    failing = frozenset({conversation_key(games[1]["turns"][:1])})   # the second episode's first request
+    with StubServer(answer_table(games), latency=0.0, failing=failing) as server:
+        _, file = setup(tmp_path, server, retries=1, backoff=0.01)
+        run(tmp_path, file, "results", 4)
+    episodes = episodes_of(tmp_path / "results")
+    spoiled = {k: s for k, s in episodes.items() if s["Error Category"] == "harness_error"}
+    assert len(episodes) == 4 and len(spoiled) == 1
+    s, = spoiled.values()
+    assert s["Harness Error"].startswith("model server: InternalServerError") and "after 2 tries" in s["Harness Error"]
+    assert all(s["Main Score"] == 100.0 for k, s in episodes.items() if k not in spoiled)   # gold answers
+    done = report(tmp_path, tmp_path / "results")
+    assert done.returncode == HARNESS_STATUS and "1 harness error(s)" in done.stderr
 
 
 def test_sample_plays_every_episode_n_times_through_openai_batching(tmp_path):

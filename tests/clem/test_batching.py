@@ -11,6 +11,7 @@ from clemcore.backends import ModelSpec
 
 from sartco.clem import benchrun
 from sartco.clem.batching import OpenAIBatchingBackend, retry_delay
+from sartco.clem.outcomes import NoAnswer
 from sartco.clem.stub_server import NO_CODE, StubServer, answer_table, conversation_key
 
 TURNS = {f"Instruction {k}.": f"put(board, 'nut', 'red', {k}, 0)" for k in range(8)}
@@ -72,17 +73,18 @@ def test_5xx_is_retried_with_backoff(tmp_path, monkeypatch):
 def test_retries_run_out(tmp_path, monkeypatch):
     with StubServer(answers(), latency=0.0, fail_first=10) as server:
         model = model_for(server, tmp_path, monkeypatch, retries=1)
-        with pytest.raises(openai.InternalServerError):
-            model.generate_response([{"role": "user", "content": "Instruction 1."}])
+        prompt, response, text = model.generate_response([{"role": "user", "content": "Instruction 1."}])
     assert server.requests == 2
+    assert isinstance(text, NoAnswer) and text == "" and text.reason == response["error"]  # not an exception
+    assert text.reason.startswith("model server: InternalServerError") and "after 2 tries" in text.reason
 
 
 def test_other_errors_are_not_retried(tmp_path, monkeypatch):
     with StubServer(answers(), latency=0.0) as server:
         model = model_for(server, tmp_path, monkeypatch, base_url=server.base_url.replace("/v1", "/nowhere"))
-        with pytest.raises(openai.NotFoundError):
-            model.generate_response([{"role": "user", "content": "Instruction 1."}])
+        text = model.generate_response([{"role": "user", "content": "Instruction 1."}])[2]
     assert (server.misrouted, server.requests) == (1, 0)  # the 404 was not retried
+    assert text.reason.startswith("model server: NotFoundError") and "after 1 try in 0 s" in text.reason
 
 
 def test_retry_delay():
@@ -138,21 +140,20 @@ def test_a_hung_server_ends_each_request_after_its_timeout_and_retries(tmp_path,
     with StubServer(answers(), hang=True, max_seconds=120) as server:
         model = model_for(server, tmp_path, monkeypatch, timeout=2, retries=2, retry_budget=600)
         start = time.monotonic()
-        with pytest.raises(openai.APITimeoutError):
-            model.generate_response([{"role": "user", "content": "Instruction 1."}])
+        text = model.generate_response([{"role": "user", "content": "Instruction 1."}])[2]
         took = time.monotonic() - start
     assert server.requests == 3                  # the first try and two retries, each cut at 2 s
     assert 6.0 <= took < 20.0, took               # not the client's default 600 s per try
     assert "APITimeoutError after 3 tries" in caplog.text and "request aborted" in caplog.text
+    assert text.reason.startswith("model server: no answer after 3 tries in ") and text.reason.endswith("(timeout 2 s)")
 
 
 def test_the_retry_budget_stops_retrying_early(tmp_path, monkeypatch):
     with StubServer(answers(), hang=True, max_seconds=120) as server:
         model = model_for(server, tmp_path, monkeypatch, timeout=2, retries=10, retry_budget=3)
         start = time.monotonic()
-        with pytest.raises(openai.APITimeoutError):
-            model.generate_response([{"role": "user", "content": "Instruction 1."}])
-    assert server.requests == 2 and time.monotonic() - start < 10   # 2 s + 2 s > the 3 s budget: no third try
+        text = model.generate_response([{"role": "user", "content": "Instruction 1."}])[2]
+    assert isinstance(text, NoAnswer) and server.requests == 2 and time.monotonic() - start < 10   # 2 s + 2 s > the 3 s budget: no third try
 
 
 def test_the_cache_answers_a_repeated_request_without_the_server(tmp_path, monkeypatch):
@@ -171,3 +172,16 @@ def test_the_cache_answers_a_repeated_request_without_the_server(tmp_path, monke
         again.generate_response(messages[0])
         again.generate_response(messages[0])
         assert server.requests == 7
+
+
+def test_a_failing_request_fails_only_its_item_of_the_batch_and_is_never_cached(tmp_path, monkeypatch):
+    messages = [[{"role": "user", "content": f"Instruction {k}."}] for k in range(3)]
+    failing = frozenset({conversation_key(["Instruction 1."])})
+    with StubServer(answers(), latency=0.0, failing=failing) as server:
+        model = model_for(server, tmp_path, monkeypatch, retries=1, cache=str(tmp_path / "cache"))
+        texts = [t for _, _, t in model.generate_batch_response(messages)]
+        assert [isinstance(t, NoAnswer) for t in texts] == [False, True, False]
+        assert texts[0] == answers()[conversation_key(["Instruction 0."])]
+        assert server.requests == 2 + 2                                 # the failing one: 2 tries
+        model.generate_batch_response(messages)
+        assert server.requests == 4 + 2                                 # the failure asked again, the answers cached

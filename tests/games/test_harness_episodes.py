@@ -11,6 +11,8 @@ from harness_helpers import fake_worker, no_worker
 
 import sartco.clem.building as building
 import sartco.scores as scores
+from sartco.clem.outcomes import NoAnswer
+from sartco.clem.players import SourcedPlayer
 from sartco.program import pool
 from sartco.report import tables
 from sartco.report.harness_table import HARNESS_STATUS
@@ -116,6 +118,39 @@ def test_cobot_describe_records_a_harness_fault(play_episodes, monkeypatch, fres
     no_worker(monkeypatch, "no worker for the describe game")
     result, = play_episodes([episodes["game_instances"][0]], experiment, game="cobot_describe")
     _harness(result, "sandbox unavailable: no worker for the describe game")
+
+
+def no_answer_first(monkeypatch, reason: str) -> None:
+    """The first answer of the run is a NoAnswer (what sartco.clem.batching gives when the model
+    server never answered); every later answer is the player's own."""
+    real, calls = SourcedPlayer._custom_response, []
+
+    def first_unanswered(self, context):
+        calls.append(1)
+        return NoAnswer(reason) if len(calls) == 1 else real(self, context)
+
+    monkeypatch.setattr(SourcedPlayer, "_custom_response", first_unanswered)
+
+
+def test_a_model_server_without_answer_is_no_model_error(play_episodes, monkeypatch, tmp_path, capsys):
+    no_answer_first(monkeypatch, "model server: no answer after 3 tries in 6 s (timeout 2 s)")
+    results = play_episodes([instance(0, [fence("\n".join(GOLD))]), instance(1, [fence("\n".join(GOLD))])], SINGLE)
+    s = _harness(results[0], "model server: no answer after 3 tries in 6 s (timeout 2 s)")
+    assert (s["Request Count"], s["Violated Request Count"]) == (1, 0)  # asked, but no violation charged
+    turn = results[0]["interactions"]["turns"][0]
+    assert [a["action"]["type"] for a in turn[:2]] == ["send message", "get message"]  # the turn is logged
+    assert (outcome(results[1]["scores"]), results[1]["scores"]["episode scores"]["Main Score"]) == ("success", 100.0)
+    status, err = _report(tmp_path, capsys)
+    assert status == HARNESS_STATUS and "1 harness error" in err
+    assert "model server: no answer after 3 tries" in (tmp_path / "scores" / "harness.md").read_text()
+
+
+def test_cobot_describe_records_a_model_server_without_answer(play_episodes, monkeypatch):
+    episodes = json.loads((GAMES / "cobot_describe" / "in" / "instances.json").read_text())["experiments"][0]
+    experiment = {k: v for k, v in episodes.items() if k != "game_instances"}
+    no_answer_first(monkeypatch, "model server: InternalServerError after 2 tries in 0 s (timeout 2 s)")
+    result, = play_episodes([episodes["game_instances"][0]], experiment, game="cobot_describe")
+    _harness(result, "model server: InternalServerError after 2 tries")
 
 
 def test_the_paper_protocol_records_a_harness_fault(paper_episodes, play_episodes, monkeypatch, fresh_pool):
