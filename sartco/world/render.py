@@ -39,8 +39,8 @@ def grid_explanation(cells: Cells) -> str:
 
 FILL = {"red": "#d62728", "green": "#2ca02c", "blue": "#1f77b4", "yellow": "#f2c318"}
 CELL = 40           # a cell's side; a stack's pieces sit in it bottom to top, one slice each
-FONT = 30           # every label's font size (numbers, titles, legend)
-MIN_WIDTH = 300     # the narrowest a transcript shows a picture (one-player transcripts: ~315 px)
+FONT = 33           # every label's font size (numbers, titles, legend)
+MIN_WIDTH = 250     # the narrowest a transcript shows a picture: a one-player board event in a 1000 px window
 MIN_LABEL = 11      # px
 GAP = 24            # between the two grids
 MARK = "#e0007a"    # the frame of a cell that differs between target and built board
@@ -112,7 +112,7 @@ def _legend_svg(y: float) -> list[str]:
     for color in FILL:
         out += [f'<rect x="{x + 2:g}" y="{y - FONT * .75:g}" width="{item - 8}" height="{item - 8}" fill="{FILL[color]}"/>',
                 _text(x + item, y, color, "start")]
-        x += item + FONT * .6 * len(color) + 14
+        x += item + FONT * .6 * len(color) + 8
     out += [f'<rect x="{x + 2:g}" y="{y - FONT * .75:g}" width="{item - 8}" height="{item - 8}" fill="none" stroke="{MARK}" stroke-width="3"/>',
             _text(x + item, y, "differs", "start")]
     return out
