@@ -35,7 +35,7 @@ def grid_explanation(cells: Cells) -> str:
 
 # --- pictures -------------------------------------------------------------------------------
 # Sized to read where a transcript shows them: an <img> squeezed to MIN_WIDTH px keeps every label
-# at least MIN_LABEL px high (font size x MIN_WIDTH / the picture's width), see label_px.
+# at least MIN_LABEL px high (font size x MIN_WIDTH / the picture's width).
 
 FILL = {"red": "#d62728", "green": "#2ca02c", "blue": "#1f77b4", "yellow": "#f2c318"}
 CELL = 40           # a cell's side; a stack's pieces sit in it bottom to top, one slice each
@@ -134,7 +134,3 @@ def diff_svg(target: Cells, built: Cells, rows: int = DEFAULT_ROWS, cols: int = 
     return (f'<svg xmlns="http://www.w3.org/2000/svg" width="{width:g}" height="{height:g}" viewBox="0 0 {width:g} {height:g}">'
             + "".join(body) + "</svg>")
 
-
-def label_px(svg_width: float, shown_width: float = MIN_WIDTH) -> float:
-    """How high the labels of a picture `svg_width` wide read when shown `shown_width` px wide."""
-    return FONT * shown_width / svg_width
