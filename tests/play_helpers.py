@@ -43,9 +43,9 @@ def scripted_episode(game_id: int, target: dict, gold: list[str], turns: list[st
 
 
 def play(instances: list[dict], experiment: dict, results_dir: Path, model: str = "mock",
-         game: str = "cobot_instruct", gen_args: dict | None = None) -> list[dict]:
+         game: str = "cobot_instruct", gen_args: dict | None = None, score: bool = True) -> list[dict]:
     """Run the instances as one experiment of a game entry of games/*/clemgame.json;
-    return, per instance, {"interactions", "scores", "dir"}."""
+    return, per instance, {"interactions", "scores" (None unless `score`), "dir"}."""
     from clemcore import backends
     from clemcore.clemgame import (ExperimentFileSaver, GameBenchmark, GameBenchmarkCallbackList, GameInstances,
                                    GameSpec, InstanceFileSaver, InteractionsFileSaver, ResultsFolder)
@@ -63,13 +63,13 @@ def play(instances: list[dict], experiment: dict, results_dir: Path, model: str 
     rows = [{"game_name": spec.game_name, "experiment": experiment, "game_instance": inst} for inst in instances]
     with GameBenchmark.load_from_spec(spec) as bench:
         sequential.run(bench, GameInstances(spec.game_name, rows), models, callbacks=callbacks)
-        files = sorted(Path(results_dir).rglob("interactions.json"))
-        bench.compute_scores(files)
+        if score:
+            bench.compute_scores(sorted(Path(results_dir).rglob("interactions.json")))
     out = []
     for inst in instances:
         d = Path(results_dir) / folder.run_dir / spec.game_name / experiment["name"] / f"instance_{inst['game_id']:05d}"
         out.append({"interactions": json.loads((d / "interactions.json").read_text()),
-                    "scores": json.loads((d / "scores.json").read_text().replace("NaN", "null")),
+                    "scores": json.loads((d / "scores.json").read_text().replace("NaN", "null")) if score else None,
                     "dir": d})
     return out
 

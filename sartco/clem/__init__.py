@@ -16,7 +16,7 @@ live inside a game folder). Reuse these from any game whose player writes code:
 - scoring.BuildScorer                  scores.json from the recorded build
 - paper.finish_paper / PaperScorer     the paper protocol (cobot_instruct_paper): the authors' per-turn
                                        reading and scores at the end of a dialogue, ours beside them
-- pictures.attach_all                  board pictures for transcripts, written at `clem score`
+- pictures.attach_all                  full-size board pictures (the transcript's links), written at `clem score`
 - rulebased.RulebasedBackend           `-m rulebased` (the rule-based follower as a model)
 - packaged                             the backends and model entries in clem/backends/ that
                                        clemcore finds wherever sartco is installed

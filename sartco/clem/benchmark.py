@@ -1,5 +1,5 @@
 """A GameBenchmark base for the games that end in a build: the game names its master and its
-scorer; scoring also writes the board pictures for `clem transcribe` (sartco.clem.pictures).
+scorer; scoring also writes the full-size board pictures the transcripts link to (sartco.clem.pictures).
 
 clemcore takes the one GameBenchmark subclass it finds among a master.py's module members, so
 import this module, not the class, into a master.py:
@@ -176,4 +176,4 @@ class BuildBenchmark(GameBenchmark):
 
     def compute_scores(self, interaction_files):
         super().compute_scores(interaction_files)
-        attach_all(interaction_files)  # board pictures for `clem transcribe`
+        attach_all(interaction_files)  # the full-size pictures the transcripts link to

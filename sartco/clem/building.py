@@ -15,7 +15,7 @@ from dataclasses import asdict, dataclass, field, fields
 
 from sartco.episode import BUILD_KEY
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, SUCCESS_CATEGORY, ErrorCode, category_family
-from sartco.world.render import differing_cells
+from sartco.world.render import diff_svg, differing_cells
 
 from .outcomes import HarnessFault, set_attempts_outcome
 from .transcript import code_block, picture, text_block
@@ -23,7 +23,7 @@ from .transcript import code_block, picture, text_block
 BOARD_EVENT = "board"               # the GM->GM event that shows target and built board
 PICTURE = "boards.svg"              # the final build's picture, beside interactions.json
 ATTEMPT_PICTURE = "boards_{}.svg"   # attempt 1, 2, ... (every episode has attempt 1)
-PICTURE_ALT = "target (left) and built board (right); differing cells framed"
+PICTURE_ALT = "target (left) and built board (right); differing cells framed; a stack's pieces bottom to top"
 # what the last step of an episode puts into clemcore's step info (the gym env's `info`): info key -> record field
 INFO_FIELDS = {"es": "es", "cell_f1": "f1", "error_category": "category", "puts": "puts"}
 
@@ -49,6 +49,10 @@ class BuildRecord:
 
     def to_json(self) -> dict:
         return asdict(self)
+
+    def svg(self) -> str:
+        """The picture of target beside built board (differing cells framed), as SVG."""
+        return diff_svg(self.target, self.cells, self.rows, self.cols)
 
     @classmethod
     def from_json(cls, data: dict) -> "BuildRecord":
@@ -165,12 +169,13 @@ def end_build(game_master, record: BuildRecord, attempts: list[BuildRecord]) -> 
 
 def log_build(game_master, record: BuildRecord, *, final: bool = True, attempt: int = 1) -> None:
     """Record a build in the episode: a GM->GM 'board' event for the transcript (outcome line,
-    the executed program as code, and the picture of target and built board, which `clem score`
-    writes as ATTEMPT_PICTURE beside interactions.json, sartco.clem.pictures) and, for the final
+    the executed program as code, and the picture of target and built board, inside the event so
+    it shows whenever the transcript is made, linked to its full-size file ATTEMPT_PICTURE, which
+    `clem score` writes beside interactions.json, sartco.clem.pictures) and, for the final
     build, the record under BUILD_KEY for the scorer."""
     program = code_block(record.program) if record.program else text_block("(none: nothing was built)")
     content = "\n\n".join([text_block(record.summary()), text_block("executed program:"), program,
-                            picture(ATTEMPT_PICTURE.format(attempt), PICTURE_ALT)])
+                            picture(record.svg(), ATTEMPT_PICTURE.format(attempt), PICTURE_ALT)])
     game_master.log_event("GM", "GM", {"type": BOARD_EVENT, "content": content,
                                        "category": record.category})
     if final:

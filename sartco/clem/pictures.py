@@ -1,13 +1,14 @@
-"""Board pictures for clemcore transcripts.
+"""Full-size board pictures beside an episode's records.
 
 Every 'board' event of an episode (one per attempt: attempt 1 in every episode, 2, 3, ... in the
-feedback experiments) shows `<img src="boards_<k>.svg">`, a path relative to the episode folder
-where transcript.html is written (sartco.clem.building.log_build), so a copied or published
-results folder keeps its pictures. The game master does not know its episode folder while
-playing, so the files are written when the episode is scored (`clem score`, which runs before
-`clem transcribe`): `attach_pictures` draws target beside built board (differing cells framed)
-as boards_<k>.svg for every attempt (the records under `sartco_attempts`, or the final build
-alone) and boards.svg for the final build. Browsers show SVG in <img>, so no PNG is needed.
+feedback experiments) carries its picture inside the event (a data: URL drawn by the game master
+while playing, sartco.clem.building.log_build), so `clem transcribe` shows it whether or not
+`clem score` ran first; the picture links to `boards_<k>.svg`, a path relative to the episode
+folder where transcript.html is written, so a copied or published results folder keeps its links.
+The game master does not know its episode folder while playing, so these files are written when
+the episode is scored (`clem score`): `attach_pictures` draws target beside built board
+(sartco.world.render.diff_svg) as boards_<k>.svg for every attempt (the records under
+`sartco_attempts`, or the final build alone) and boards.svg for the final build.
 """
 from __future__ import annotations
 
@@ -16,10 +17,7 @@ import logging
 from pathlib import Path
 
 from sartco.episode import ATTEMPTS_KEY, BUILD_KEY
-from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
-from sartco.world.render import diff_svg
-
-from .building import ATTEMPT_PICTURE, PICTURE
+from .building import ATTEMPT_PICTURE, PICTURE, BuildRecord
 
 log = logging.getLogger(__name__)
 
@@ -41,8 +39,7 @@ def attach_pictures(interactions_file: str | Path) -> bool:
 
 
 def _svg(record: dict) -> str:
-    """Target beside built board (differing cells framed), as SVG."""
-    return diff_svg(record["target"], record["cells"], record.get("rows", DEFAULT_ROWS), record.get("cols", DEFAULT_COLS))
+    return BuildRecord.from_json(record).svg()
 
 
 def attach_all(interaction_files) -> int:

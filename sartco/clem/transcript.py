@@ -15,11 +15,12 @@ The mixin is also where a player's answer enters the game master (`step`): it is
 once (sartco.text.escape: lone surrogates, control characters, bidi overrides as visible
 escapes), so the parser, the sandbox, every record and every transcript see the same safe text;
 when escaping changed it, the answer's action keeps the exact text as ASCII JSON under
-`exact_json`. (The player escapes its own record the same way: sartco.clem.players.) Board pictures are `<img>` tags with paths relative to the episode folder
+`exact_json`. (The player escapes its own record the same way: sartco.clem.players.) Board pictures are `<img>` tags holding the SVG as a data: URL, each linked to its full-size file by a path relative to the episode folder
 (`picture`), so a copied results folder still shows them.
 """
 from __future__ import annotations
 
+import base64
 import html
 import re
 
@@ -29,13 +30,14 @@ from sartco.text import escape, exact_json
 RAW_KEY = "text"           # a message action's text (its `content` is the display form)
 EXACT_KEY = "exact_json"   # an answer's exact text as ASCII JSON, when escaping changed it
 FENCE = re.compile(r"^[ \t]*```[^\n]*\n(.*?)^[ \t]*```[ \t]*$", re.M | re.S)  # a closed fenced block
-TEXT_STYLE = "white-space: pre-wrap; margin: 0"
+TEXT_STYLE = "white-space: pre-wrap; margin: 0; font-family: monospace"  # grids and readings line up
 CODE_STYLE = ("white-space: pre; overflow-x: auto; margin: 4px 0; padding: 6px; background: #f6f8fa; "
               "border: 1px solid #d0d7de; border-radius: 4px; font-family: monospace")
 
 
 def text_block(text: str) -> str:
-    """Plain text as an HTML block that keeps its line breaks and indentation."""
+    """Plain text as an HTML block that keeps its line breaks and indentation, in monospace (the
+    describer's grid view and the paper protocol's readings line up)."""
     return f'<div class="sartco-text" style="{TEXT_STYLE}">{html.escape(text, quote=False)}</div>'
 
 
@@ -45,9 +47,12 @@ def code_block(code: str) -> str:
             f"{html.escape(code.rstrip(), quote=False)}</code></pre>")
 
 
-def picture(path: str, alt: str) -> str:
-    """An image by a path relative to the episode folder (where transcript.html is written)."""
-    return f'<div class="sartco-picture"><img src="{html.escape(path)}" alt="{html.escape(alt)}" style="max-width: 100%" /></div>'
+def picture(svg: str, href: str, alt: str) -> str:
+    """An SVG picture inside the page (a data: URL, so it needs no file beside the transcript),
+    linked to its full-size file `href`, a path relative to the episode folder."""
+    data = base64.b64encode(svg.encode("utf-8")).decode("ascii")
+    return (f'<div class="sartco-picture"><a href="{html.escape(href)}" title="full size: {html.escape(href)}">'
+            f'<img src="data:image/svg+xml;base64,{data}" alt="{html.escape(alt)}" style="max-width: 100%" /></a></div>')
 
 
 def display(text: str) -> str:

@@ -34,44 +34,87 @@ def grid_explanation(cells: Cells) -> str:
 
 
 # --- pictures -------------------------------------------------------------------------------
+# Sized to read where a transcript shows them: an <img> squeezed to MIN_WIDTH px keeps every label
+# at least MIN_LABEL px high (font size x MIN_WIDTH / the picture's width).
 
 FILL = {"red": "#d62728", "green": "#2ca02c", "blue": "#1f77b4", "yellow": "#f2c318"}
-CELL = 44
+CELL = 40           # a cell's side; a stack's pieces sit in it bottom to top, one slice each
+FONT = 33           # every label's font size (numbers, titles, legend)
+MIN_WIDTH = 250     # the narrowest a transcript shows a picture: a one-player board event in a 1000 px window
+MIN_LABEL = 11      # px
+GAP = 24            # between the two grids
+MARK = "#e0007a"    # the frame of a cell that differs between target and built board
+SANS = 'font-family="sans-serif"'
 
 
-def _piece_svg(shape: str, color: str, x: float, y: float, size: float, cell: tuple[float, float]) -> str:
-    """One piece inset in its cell; a bridge reaches the cell's edges along its axis, so the two
-    halves of a bridge join into one bar across the cell border."""
+def _text(x: float, y: float, text: str, anchor: str = "middle") -> str:
+    return f'<text x="{x:g}" y="{y:g}" {SANS} font-size="{FONT}" text-anchor="{anchor}">{escape(text)}</text>'
+
+
+def _piece_svg(shape: str, color: str, x: float, y: float, w: float, h: float) -> str:
+    """One piece in the box (x, y, w, h): washer a diamond, nut a hexagon, screw a circle, bridge a
+    bar (horizontal: across the whole box width, so the halves of a bridge join; vertical: upright)."""
     fill = FILL.get(color, "#888888")
-    cx, cy, h = x + size / 2, y + size / 2, size / 2
-    if shape == "washer":  # a diamond
-        return f'<polygon points="{cx},{y} {x + size},{cy} {cx},{y + size} {x},{cy}" fill="{fill}" stroke="#222"/>'
-    if shape == "nut":  # a hexagon
-        pts = " ".join(f"{cx + h * dx:.1f},{cy + h * dy:.1f}" for dx, dy in
-                       ((-1, 0), (-.5, -.87), (.5, -.87), (1, 0), (.5, .87), (-.5, .87)))
+    cx, cy = x + w / 2, y + h / 2
+    r = (min(w, h) - 2) / 2
+    rx, ry = min(w - 2, 2.2 * h) / 2, (h - 2) / 2  # a flat slice of a stack gets a flattened shape
+    if shape == "washer":
+        return f'<polygon points="{cx:g},{cy - ry:g} {cx + rx:g},{cy:g} {cx:g},{cy + ry:g} {cx - rx:g},{cy:g}" fill="{fill}" stroke="#222"/>'
+    if shape == "nut":
+        pts = " ".join(f"{cx + rx * dx:.1f},{cy + ry * dy:.1f}" for dx, dy in
+                       ((-1, 0), (-.5, -1), (.5, -1), (1, 0), (.5, 1), (-.5, 1)))
         return f'<polygon points="{pts}" fill="{fill}" stroke="#222"/>'
-    if shape == "screw":  # a circle
-        return f'<circle cx="{cx}" cy="{cy}" r="{h * .8:.1f}" fill="{fill}" stroke="#222"/>'
-    if shape == "bridge-h":  # a bar along the bridge
-        return f'<rect x="{cell[0]}" y="{cy - h * .35:.1f}" width="{CELL}" height="{h * .7:.1f}" fill="{fill}" stroke="{fill}"/>'
+    if shape == "screw":
+        return f'<ellipse cx="{cx:g}" cy="{cy:g}" rx="{rx * .8:.1f}" ry="{ry * .8:.1f}" fill="{fill}" stroke="#222"/>'
+    if shape == "bridge-h":
+        return f'<rect x="{x - 2:g}" y="{cy - r * .45:.1f}" width="{w + 4:g}" height="{r * .9:.1f}" fill="{fill}" stroke="{fill}"/>'
     if shape == "bridge-v":
-        return f'<rect x="{cx - h * .35:.1f}" y="{cell[1]}" width="{h * .7:.1f}" height="{CELL}" fill="{fill}" stroke="{fill}"/>'
-    return f'<text x="{cx}" y="{cy}" font-size="9" text-anchor="middle">{escape(shape[:6])}</text>'
+        return f'<rect x="{cx - r * .45:.1f}" y="{y:g}" width="{r * .9:.1f}" height="{h:g}" fill="{fill}" stroke="{fill}"/>'
+    return f'<rect x="{x + 2:g}" y="{y + 2:g}" width="{w - 4:g}" height="{h - 4:g}" fill="none" stroke="{fill}" stroke-dasharray="3"/>'
+
+
+def _stack_svg(stack: list, x: float, y: float) -> list[str]:
+    """A stack in its cell: one horizontal slice per piece, the bottom piece in the bottom slice."""
+    slice_h = (CELL - 4) / max(len(stack), 1)
+    return [_piece_svg(shape, color, x + 2, y + CELL - 2 - (level + 1) * slice_h, CELL - 4, slice_h)
+            for level, (shape, color) in enumerate(stack)]
+
+
+def _label_width(rows: int) -> float:
+    return FONT * .6 * len(str(rows)) + 10
 
 
 def _grid_svg(cells: Cells, rows: int, cols: int, ox: float, title: str, marked: set[str]) -> list[str]:
-    out = [f'<text x="{ox + cols * CELL / 2}" y="16" font-family="sans-serif" font-size="13" text-anchor="middle">{escape(title)}</text>']
+    """One grid with its title, column numbers above and row numbers left, 1-based as the
+    instructions count them ("the 8th row, 4th column")."""
+    gx, gy = ox + _label_width(rows), 2 * FONT + 16
+    out = [_text(gx + cols * CELL / 2, FONT, title)]
+    out += [_text(gx + c * CELL + CELL / 2, 2 * FONT + 8, str(c + 1)) for c in range(cols)]
+    out += [_text(gx - 6, gy + r * CELL + CELL / 2 + FONT * .35, str(r + 1), "end") for r in range(rows)]
+    frames = []
     for r in range(rows):
         for c in range(cols):
-            x, y = ox + c * CELL, 24 + r * CELL
-            stroke = ' stroke="#e0007a" stroke-width="3"' if f"{r}:{c}" in marked else ' stroke="#999"'
-            out.append(f'<rect x="{x}" y="{y}" width="{CELL}" height="{CELL}" fill="#f7f7f7"{stroke}/>')
-            stack = cells.get(f"{r}:{c}", [])
-            for level, (shape, color) in enumerate(stack):  # draw bottom to top, shrinking upwards
-                inset = 3 + level * 4.5
-                out.append(_piece_svg(shape, color, x + inset, y + inset, CELL - 2 * inset, (x, y)))
-            if len(stack) > 1:
-                out.append(f'<text x="{x + CELL - 3}" y="{y + CELL - 3}" font-size="9" text-anchor="end">{len(stack)}</text>')
+            x, y = gx + c * CELL, gy + r * CELL
+            out.append(f'<rect x="{x:g}" y="{y:g}" width="{CELL}" height="{CELL}" fill="#f7f7f7" stroke="#999"/>')
+            out += _stack_svg(cells.get(f"{r}:{c}", []), x, y)
+            if f"{r}:{c}" in marked:  # drawn last: on top of bridges reaching over the border
+                frames.append(f'<rect x="{x + 1.5:g}" y="{y + 1.5:g}" width="{CELL - 3}" height="{CELL - 3}" fill="none" stroke="{MARK}" stroke-width="3"/>')
+    return out + frames
+
+
+def _legend_svg(y: float) -> list[str]:
+    """Two lines under the grids: the shapes (grey), then the colours and the frame of a differing cell."""
+    out, x, item = [], 0.0, FONT + 4
+    for shape, name in (("washer", "washer"), ("nut", "nut"), ("screw", "screw"), ("bridge-h", "bridge")):
+        out += [_piece_svg(shape, "grey", x + 2, y - FONT * .85, item - 4, item - 4), _text(x + item + 6, y, name, "start")]
+        x += item + FONT * .6 * len(name) + 24
+    x, y = 0.0, y + FONT + 12
+    for color in FILL:
+        out += [f'<rect x="{x + 2:g}" y="{y - FONT * .75:g}" width="{item - 8}" height="{item - 8}" fill="{FILL[color]}"/>',
+                _text(x + item, y, color, "start")]
+        x += item + FONT * .6 * len(color) + 8
+    out += [f'<rect x="{x + 2:g}" y="{y - FONT * .75:g}" width="{item - 8}" height="{item - 8}" fill="none" stroke="{MARK}" stroke-width="3"/>',
+            _text(x + item, y, "differs", "start")]
     return out
 
 
@@ -80,8 +123,14 @@ def differing_cells(target: Cells, built: Cells) -> set[str]:
 
 
 def diff_svg(target: Cells, built: Cells, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS) -> str:
-    """The target beside the built board, the cells that differ framed in magenta on both."""
+    """The target beside the built board, numbered rows and columns, the cells that differ framed
+    in magenta on both, and a legend of shapes and colours underneath."""
     marked = differing_cells(target, built)
-    width, height = 2 * cols * CELL + 30, rows * CELL + 26
-    body = _grid_svg(target, rows, cols, 1, "target", marked) + _grid_svg(built, rows, cols, cols * CELL + 28, "built", marked)
-    return f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}">' + "".join(body) + "</svg>"
+    grid_w = _label_width(rows) + cols * CELL
+    width, grids_h = 2 * grid_w + GAP + 2, 2 * FONT + 16 + rows * CELL
+    height = grids_h + 2 * FONT + 34
+    body = (_grid_svg(target, rows, cols, 0, "target", marked) + _grid_svg(built, rows, cols, grid_w + GAP, "built", marked)
+            + _legend_svg(grids_h + FONT + 8))
+    return (f'<svg xmlns="http://www.w3.org/2000/svg" width="{width:g}" height="{height:g}" viewBox="0 0 {width:g} {height:g}">'
+            + "".join(body) + "</svg>")
+

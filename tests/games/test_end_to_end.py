@@ -46,7 +46,7 @@ def test_run_score_transcribe_report(tmp_path, model):
         if model == "mock":
             assert episode["Exact Match"] == 1 and episode["CodeBLEU"] == 1.0
         assert (path.parent / "boards.svg").is_file() and (path.parent / "boards_1.svg").is_file()
-        assert '<img src="boards_1.svg"' in (path.parent / "transcript.html").read_text()  # relative: travels
+        assert '<a href="boards_1.svg"' in (path.parent / "transcript.html").read_text()  # relative: travels
     rows = list(csv.DictReader((tmp_path / "scores" / "ablations.csv").open()))
     assert [(r["model"], r["ablation"], r["value"], int(r["episodes"]), float(r["es"])) for r in rows] == \
         [(model, "examples", "0", 10, 100.0)]

@@ -60,8 +60,9 @@ def test_fail_once_then_gold(play_episodes):
     # every attempt in the transcript with its own board picture
     events = board_events(result)
     assert [e["action"]["category"] for e in events] == [WRONG_CATEGORY, "success"]
-    assert [re.findall(r'<img src="([^"]+)"', e["action"]["content"]) for e in events] == \
-        [["boards_1.svg"], ["boards_2.svg"]]  # relative to the episode folder
+    assert [re.findall(r'<a href="([^"]+)"', e["action"]["content"]) for e in events] == \
+        [["boards_1.svg"], ["boards_2.svg"]]  # full-size pictures, relative to the episode folder
+    assert all(e["action"]["content"].count('<img src="data:image/svg+xml;base64,') == 1 for e in events)
     assert [a["category"] for a in result["interactions"]["sartco_attempts"]] == [WRONG_CATEGORY, "success"]
 
 

@@ -38,7 +38,7 @@ def browse(browser: str, profile: Path, *args: str) -> subprocess.CompletedProce
 
 
 # A page beside transcript.html that loads it in a frame (same origin: both from the local HTTP
-# server) and reports, after load, every picture's size and the x position of each line of the
+# server) and reports, after load, every picture's link and size and the x position of each line of the
 # first code block, measured with a DOM Range on the line's first visible character.
 PROBE = """<!doctype html><html><body>
 <iframe id="t" src="transcript.html" style="width: 1000px; height: 3000px"></iframe>
@@ -46,7 +46,7 @@ PROBE = """<!doctype html><html><body>
 <script>
 window.addEventListener("load", () => {
   const d = document.getElementById("t").contentDocument;
-  const pictures = [...d.images].map(i => [i.getAttribute("src"), i.complete, i.naturalWidth]);
+  const pictures = [...d.images].map(i => [i.closest("a").getAttribute("href"), i.complete, i.naturalWidth]);
   const lines = [];
   const code = d.querySelector("pre.sartco-code code");
   const node = code ? code.firstChild : null;
