@@ -12,7 +12,8 @@ line of the final build; Main Score; ES; cell F1 with P and R; the error categor
 its meaning in plain words (sartco.world.category_meaning); the harness's reason for a
 harness_error; EM and CodeBLEU where the scorer computed them; puts; for the paper protocol its
 EM / CB / ES and the same per turn; for dialogues ES by round; then every other score of the game.
-Each value is a `<span class="sartco-value" data-score=NAME data-value=JSON>` holding the value
+Each value is a `<span class="sartco-value" data-score=NAME data-value=JSON>` (a per-turn value
+also data-round=K, its key under scores.json's "round scores") holding the value
 as scores.json has it (JSON, NaN as NaN) and shown rounded to 4 significant digits, "n/a" for
 NaN. Every text is escaped (sartco.text.escape, then HTML).
 
@@ -67,10 +68,12 @@ def shown(value) -> str:
     return escape(str(value))
 
 
-def value(name: str, scores: dict, label: str | None = None) -> str:
-    """One score as a span carrying its exact scores.json value (JSON) and its shown form."""
+def value(name: str, scores: dict, label: str | None = None, round_idx=None) -> str:
+    """One score as a span carrying its exact scores.json value (JSON) and its shown form (a round
+    score: with the round's index as scores.json's "round scores" keys it)."""
     v = scores.get(name)
-    return (f'<span class="sartco-value" data-score="{html.escape(name)}" data-value="{html.escape(json.dumps(v))}">'
+    where = "" if round_idx is None else f' data-round="{int(round_idx)}"'
+    return (f'<span class="sartco-value" data-score="{html.escape(name)}"{where} data-value="{html.escape(json.dumps(v))}">'
             f"{html.escape((label or '') + shown(v), quote=False)}</span>")
 
 
@@ -115,7 +118,7 @@ def card_html(scores: dict, outcome_line: str | None) -> str:
     if turns:
         head = "".join(f'<th>{html.escape(n.split()[1])}</th>' for n in PAPER_SCORES.values())
         body = "".join(f'<tr data-turn="{int(k) + 1}"><td>{int(k) + 1}</td>'
-                       + "".join(f'<td>{value(n, turn)}</td>' for n in PAPER_SCORES.values())
+                       + "".join(f'<td>{value(n, turn, round_idx=k)}</td>' for n in PAPER_SCORES.values())
                        + "</tr>" for k, turn in turns)
         parts.append(f'<table class="sartco-turns"><tr><th>paper turn</th>{head}</tr>{body}</table>')
     return "".join(parts) + "</div>"
