@@ -46,9 +46,12 @@ FRAMEWORK = {metrics.METRIC_REQUEST_COUNT, metrics.METRIC_REQUEST_COUNT_PARSED, 
              metrics.METRIC_REQUEST_SUCCESS_RATIO, metrics.METRIC_ABORTED, metrics.METRIC_SUCCESS, metrics.METRIC_LOSE}
 SHOWN_FIRST = (metrics.BENCH_SCORE, EXECUTION_SUCCESS, CELL_F1, CELL_PRECISION, CELL_RECALL, ERROR_CATEGORY,
                ERROR_FAMILY, HARNESS_REASON, EXACT_MATCH, CODEBLEU, PUTS, *PAPER_SCORES.values())
-CARD_STYLE = ("<style>.sartco-card {margin: 8px 0; padding: 8px; border: 2px solid #444; border-radius: 6px; "
-              "background: #fff} .sartco-card th, .sartco-card td {text-align: left; padding: 2px 10px 2px 0; "
-              "vertical-align: top}</style>")
+VERDICT_COLOURS = {"won": "#1a7f37", "lost": "#cf222e", "aborted": "#57606a", "unknown": "#57606a"}
+# the card's message is wider than clemcore's other GM->GM messages, its labels stay on one line
+CARD_STYLE = ("<style>.msg:has(.sartco-card) {margin-left: 5%; margin-right: 5%; font-size: 0.9rem} "
+              ".sartco-card {margin: 4px 0; padding: 8px 12px; border: 2px solid #444; border-radius: 6px; "
+              "background: #fff} .sartco-card th {white-space: nowrap} .sartco-card th, .sartco-card td "
+              "{text-align: left; padding: 2px 12px 2px 0; vertical-align: top}</style>")
 
 
 def card_scores(scorer_class, game_name: str, experiment: dict, instance: dict, interactions: dict) -> dict:
@@ -110,7 +113,7 @@ def card_html(scores: dict, outcome_line: str | None) -> str:
         if name not in FRAMEWORK and name not in SHOWN_FIRST and name not in by_round:
             rows.append(_row(name, value(name, ep)))
     parts = [f'{CARD_STYLE}<div class="sartco-card"><div><b>Score card</b>: '
-             f'<span class="sartco-verdict">{verdict}</span></div>']
+             f'<span class="sartco-verdict" style="font-weight: bold; color: {VERDICT_COLOURS[verdict]}">{verdict}</span></div>']
     if outcome_line:
         parts.append(f'<div class="sartco-outcome">{html.escape(escape(outcome_line), quote=False)}</div>')
     parts.append(f'<table class="sartco-scores">{"".join(rows)}</table>')
