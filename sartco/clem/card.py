@@ -88,7 +88,10 @@ def card_html(scores: dict, outcome_line: str | None) -> str:
     """The card of an episode's scores (clemcore's scores dict: "episode scores", "round scores")."""
     ep, rounds = scores.get(metrics.KEY_EPISODE_SCORES, {}), scores.get(metrics.KEY_ROUND_SCORES, {})
     verdict = next((word for key, word in VERDICTS if ep.get(key)), "unknown")
-    rows = [_row("Main Score", value(metrics.BENCH_SCORE, ep)), _row("ES (execution success)", value(EXECUTION_SUCCESS, ep))]
+    paper = any(name in ep for name in PAPER_SCORES.values())
+    ours = " (ours: the whole program)" if paper else ""  # the paper protocol's Main Score is 100 x its ES
+    rows = [_row("Main Score" + (" (100 x paper ES)" if paper else ""), value(metrics.BENCH_SCORE, ep)),
+            _row(f"ES (execution success){ours}", value(EXECUTION_SUCCESS, ep))]
     if CELL_F1 in ep:
         rows.append(_row("Cell F1 (P / R)", f"{value(CELL_F1, ep)} ({value(CELL_PRECISION, ep, 'P ')} / "
                                             f"{value(CELL_RECALL, ep, 'R ')})"))
@@ -100,12 +103,12 @@ def card_html(scores: dict, outcome_line: str | None) -> str:
             meaning = "an unknown category."
         rows.append(_row("Error category", f"{value(ERROR_CATEGORY, ep)} ({value(ERROR_FAMILY, ep)}): "
                                            f'<span class="sartco-meaning">{html.escape(meaning)}</span>'))
-    for name, label in ((HARNESS_REASON, "Harness failure"), (EXACT_MATCH, "EM (exact match)"),
-                        (CODEBLEU, "CodeBLEU"), (PUTS, "Puts")):
+    for name, label in ((HARNESS_REASON, "Harness failure"), (EXACT_MATCH, f"EM (exact match){ours}"),
+                        (CODEBLEU, f"CodeBLEU{ours}"), (PUTS, "Puts")):
         if name in ep:
             rows.append(_row(label, value(name, ep)))
-    if any(name in ep for name in PAPER_SCORES.values()):
-        rows.append(_row("Paper protocol", " / ".join(value(n, ep, f"{n.split()[1]} ") for n in PAPER_SCORES.values())))
+    if paper:
+        rows.append(_row("Paper protocol (share of turns)", " / ".join(value(n, ep, f"{n.split()[1]} ") for n in PAPER_SCORES.values())))
     by_round = sorted((n for n in ep if n.startswith(ROUND_PREFIX)), key=lambda n: int(n[len(ROUND_PREFIX):]))
     if by_round:
         rows.append(_row("ES by round", " ".join(value(n, ep, f"{n[len(ROUND_PREFIX):]}: ") for n in by_round)))
