@@ -111,7 +111,8 @@ def card_html(scores: dict, outcome_line: str | None) -> str:
         rows.append(_row("Paper protocol (share of turns)", " / ".join(value(n, ep, f"{n.split()[1]} ") for n in PAPER_SCORES.values())))
     by_round = sorted((n for n in ep if n.startswith(ROUND_PREFIX)), key=lambda n: int(n[len(ROUND_PREFIX):]))
     if by_round:
-        rows.append(_row("ES by round", " ".join(value(n, ep, f"{n[len(ROUND_PREFIX):]}: ") for n in by_round)))
+        rows.append(_row("ES by round (after k corrections)",
+                         " · ".join(value(n, ep, f"round {n[len(ROUND_PREFIX):]}: ") for n in by_round)))
     for name in ep:
         if name not in FRAMEWORK and name not in SHOWN_FIRST and name not in by_round:
             rows.append(_row(name, value(name, ep)))
