@@ -175,3 +175,35 @@ def test_the_card_in_a_browser(played, tmp_path):
             assert "pwned" not in card.ids
     finally:
         server.shutdown()
+
+
+@pytest.fixture
+def fresh_pool():
+    from sartco.program import pool
+    pool.shutdown()
+    yield
+    pool.shutdown()
+
+
+def test_a_harness_fault_has_its_card_and_its_meaning(play_episodes, monkeypatch, fresh_pool):
+    from clemcore.clemgame.transcripts.builder import build_transcript
+    from harness_helpers import no_worker
+
+    no_worker(monkeypatch, "no worker for the card")
+    [result] = play_episodes([scripted_episode(0, TARGET, GOLD, ["Build the board."])], INSTRUCT)
+    card = assert_card_matches(build_transcript(result["interactions"]), read_scores(result["dir"] / "scores.json"))
+    assert card.values["Error Category"][0][1] == "harness_error" and card.texts["sartco-verdict"] == "aborted"
+    assert card.texts["sartco-meaning"] == "the harness failed, not the model; left out of the scores."
+    assert "no worker for the card" in card.values["Harness Error"][0][1]
+
+
+def test_a_fault_of_the_card_loses_nothing(play_episodes, monkeypatch):
+    import sartco.clem.card as card
+
+    def broken(*args):
+        raise RuntimeError("the card broke")
+    monkeypatch.setattr(card, "card_scores", broken)
+    [result] = play_episodes([scripted_episode(0, TARGET, GOLD, ["Build the board."])], INSTRUCT)
+    last = result["interactions"]["turns"][-1][-1]["action"]
+    assert last["type"] == "score card" and "no score card: score card: RuntimeError: the card broke" in last["content"]
+    assert result["scores"]["episode scores"]["Main Score"] == 100  # the episode and its scores are unharmed
