@@ -76,7 +76,8 @@ def value(name: str, scores: dict, label: str | None = None, round_idx=None) -> 
     score: with the round's index as scores.json's "round scores" keys it)."""
     v = scores.get(name)
     where = "" if round_idx is None else f' data-round="{int(round_idx)}"'
-    return (f'<span class="sartco-value" data-score="{html.escape(name)}"{where} data-value="{html.escape(json.dumps(v))}">'
+    return (f'<span class="sartco-value" data-score="{html.escape(name)}"{where} '
+            f'data-value="{html.escape(json.dumps(v))}">'
             f"{html.escape((label or '') + shown(v), quote=False)}</span>")
 
 
@@ -108,7 +109,8 @@ def card_html(scores: dict, outcome_line: str | None) -> str:
         if name in ep:
             rows.append(_row(label, value(name, ep)))
     if paper:
-        rows.append(_row("Paper protocol (share of turns)", " / ".join(value(n, ep, f"{n.split()[1]} ") for n in PAPER_SCORES.values())))
+        rows.append(_row("Paper protocol (share of turns)",
+                         " / ".join(value(n, ep, f"{n.split()[1]} ") for n in PAPER_SCORES.values())))
     by_round = sorted((n for n in ep if n.startswith(ROUND_PREFIX)), key=lambda n: int(n[len(ROUND_PREFIX):]))
     if by_round:
         rows.append(_row("ES by round (after k corrections)",
@@ -116,8 +118,9 @@ def card_html(scores: dict, outcome_line: str | None) -> str:
     for name in ep:
         if name not in FRAMEWORK and name not in SHOWN_FIRST and name not in by_round:
             rows.append(_row(name, value(name, ep)))
+    colour = VERDICT_COLOURS[verdict]
     parts = [f'{CARD_STYLE}<div class="sartco-card"><div><b>Score card</b>: '
-             f'<span class="sartco-verdict" style="font-weight: bold; color: {VERDICT_COLOURS[verdict]}">{verdict}</span></div>']
+             f'<span class="sartco-verdict" style="font-weight: bold; color: {colour}">{verdict}</span></div>']
     if outcome_line:
         parts.append(f'<div class="sartco-outcome">{html.escape(escape(outcome_line), quote=False)}</div>')
     parts.append(f'<table class="sartco-scores">{"".join(rows)}</table>')
