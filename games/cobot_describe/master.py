@@ -34,6 +34,7 @@ from clemcore.clemgame.errors import ParseError
 
 from sartco.clem import benchmark
 from sartco.clem.building import BuildRecord, build_for, end_build, log_build, parse_failure_for
+from sartco.clem.card import ScoreCard
 from sartco.clem.describer import Describer, fill_builder_prompt, log_instruction, parse_instruction
 from sartco.clem.dialogue import (DONE, Dialogue, DialogueLog, DialogueScorer, answer_message, correction_message,
                                   parse_answer, parse_builder_answer, parse_review, question_message, review_message,
@@ -49,7 +50,8 @@ from sartco.world import ErrorCode
 DESCRIBER_PARSERS = {"instruction": parse_instruction, "answer": parse_answer, "review": parse_review}
 
 
-class CobotDescribe(HarnessGuard, MarkdownTranscript, DialogueGameMaster):
+class CobotDescribe(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameMaster):
+    scorer_class = DialogueScorer
 
     def _on_setup(self, **instance):
         self.episode: DescribeEpisode = instance
@@ -134,5 +136,4 @@ class CobotDescribe(HarnessGuard, MarkdownTranscript, DialogueGameMaster):
 
 class CobotDescribeBenchmark(benchmark.BuildBenchmark):
     master_class = CobotDescribe
-    scorer_class = DialogueScorer
     episode_fields = benchmark.json_fields(DescribeEpisode)

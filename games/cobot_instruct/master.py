@@ -3,7 +3,8 @@
 Thin by design: _parse_response only finds the code (sartco.clem.parsing), _advance_game
 collects it and, after the last instruction, runs it through sartco.program and records the
 result (sartco.clem.building); the scorer turns the recorded build into numbers
-(sartco.clem.scoring). The builder never sees the target board.
+(sartco.clem.scoring); the transcript ends with a score card of those numbers (sartco.clem.card).
+The builder never sees the target board.
 
 Episode = one instance of in/instances.json (sartco.episode.InstructEpisode):
   turns         the text of each turn: one for single-turn tasks, one per put for multi-turn; the
@@ -35,6 +36,7 @@ from clemcore.clemgame.errors import ParseError
 from sartco.clem import benchmark  # the module, not the class: one GameBenchmark subclass per master.py
 from sartco.clem.answers import instruct_answers
 from sartco.clem.building import BuildRecord, build_for, finish_build, log_build, parse_failure_for
+from sartco.clem.card import ScoreCard
 from sartco.clem.feedback import feedback_for, max_attempts
 from sartco.clem.harness import HarnessGuard
 from sartco.clem.outcomes import log_outcome
@@ -45,7 +47,8 @@ from sartco.clem.transcript import MarkdownTranscript
 from sartco.episode import ATTEMPTS_KEY, InstructEpisode, PaperProtocolEpisode
 
 
-class CobotInstruct(HarnessGuard, MarkdownTranscript, DialogueGameMaster):
+class CobotInstruct(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameMaster):
+    scorer_class = PaperScorer  # BuildScorer's scores, plus the paper's in a paper-protocol episode
 
     def _on_setup(self, **instance):
         self.instance: InstructEpisode | PaperProtocolEpisode = instance
@@ -96,7 +99,6 @@ class CobotInstruct(HarnessGuard, MarkdownTranscript, DialogueGameMaster):
 
 class CobotInstructBenchmark(benchmark.BuildBenchmark):
     master_class = CobotInstruct
-    scorer_class = PaperScorer  # BuildScorer's scores, plus the paper's in a paper-protocol episode
     episode_fields = benchmark.json_fields(InstructEpisode)
 
     @classmethod

@@ -1,14 +1,18 @@
-"""A GameBenchmark base for the games that end in a build: the game names its master and its
-scorer; scoring also writes the full-size board pictures the transcripts link to (sartco.clem.pictures).
+"""A GameBenchmark base for the games that end in a build: the game names its master, and the
+master its scorer (`scorer_class`: the master also runs it for the transcript's score card,
+sartco.clem.card); scoring also writes the full-size board pictures the transcripts link to
+(sartco.clem.pictures).
 
 clemcore takes the one GameBenchmark subclass it finds among a master.py's module members, so
 import this module, not the class, into a master.py:
 
     from sartco.clem import benchmark
 
+    class MyGameMaster(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameMaster):
+        scorer_class = MyScorer
+
     class MyGameBenchmark(benchmark.BuildBenchmark):
         master_class = MyGameMaster
-        scorer_class = MyScorer
         episode_fields = benchmark.json_fields(MyEpisode)   # a TypedDict of sartco.episode
 
 Instance files are checked up front. `clem run` loads the models, then the game (this class),
@@ -132,8 +136,8 @@ def clem_run_experiment(argv: list[str]) -> tuple[bool, str | None]:
 
 
 class BuildBenchmark(GameBenchmark):
-    master_class = None   # a DialogueGameMaster subclass: (game_spec, experiment, player_models)
-    scorer_class = None   # a GameScorer subclass: (game_name, experiment, game_instance)
+    master_class = None   # a DialogueGameMaster subclass: (game_spec, experiment, player_models); its
+                          # `scorer_class`: a GameScorer subclass (game_name, experiment, game_instance)
     episode_fields = EPISODE_FIELDS  # field -> JSON type every episode of the instance file must have
 
     def __init__(self, game_spec):
@@ -172,7 +176,7 @@ class BuildBenchmark(GameBenchmark):
             self.recorder.close()
 
     def create_game_scorer(self, experiment: dict, game_instance: dict):
-        return self.scorer_class(self.game_name, experiment, game_instance)
+        return self.master_class.scorer_class(self.game_name, experiment, game_instance)
 
     def compute_scores(self, interaction_files):
         super().compute_scores(interaction_files)

@@ -2,11 +2,11 @@
 from .board import Board, Cells, parse_key
 from .components import BRIDGES, COLORS, DEFAULT_COLS, DEFAULT_ROWS, LETTERS, MAX_DEPTH, SHAPES
 from .error_codes import (MISMATCH_CODES, PYTHON_CODES, SANDBOX_CODES, SUCCESS_CATEGORY, WORLD_CODES, ErrorCode, WorldError,
-                     category_family)
+                     category_family, category_meaning)
 from .rules import check, put
 
 __all__ = [
     "Board", "Cells", "parse_key", "BRIDGES", "COLORS", "DEFAULT_COLS", "DEFAULT_ROWS",
     "LETTERS", "MAX_DEPTH", "SHAPES", "MISMATCH_CODES", "PYTHON_CODES", "SANDBOX_CODES", "WORLD_CODES",
-    "SUCCESS_CATEGORY", "ErrorCode", "WorldError", "category_family", "check", "put",
+    "SUCCESS_CATEGORY", "ErrorCode", "WorldError", "category_family", "category_meaning", "check", "put",
 ]

@@ -1,5 +1,7 @@
 """The one vocabulary of failures: the paper's error taxonomy plus the sandbox's own codes, their
-families (ErrorCode.family, category_family) and WorldError, what put/init_board raise.
+families (ErrorCode.family, category_family), their meanings in plain words (MEANINGS,
+category_meaning: one sentence each, what transcripts' score cards and reports show) and
+WorldError, what put/init_board raise.
 
 World errors never import clemcore; the game masters translate them in one place.
 """
@@ -62,6 +64,47 @@ _FAMILIES = {
     **dict.fromkeys(SANDBOX_CODES, "sandbox"), **dict.fromkeys(MISMATCH_CODES, "mismatch"),
 }
 SUCCESS_CATEGORY = "success"  # the category recorded for a build that equals its target
+
+
+# what each category means, in plain words (one sentence each; the one place for these texts)
+MEANINGS = {
+    SUCCESS_CATEGORY: "the program ran and built exactly the target board.",
+    ErrorCode.SYNTAX_ERROR: "the code is not valid Python, so nothing ran.",
+    ErrorCode.KEY_ERROR: "the program looked up a key that does not exist (such as an unknown shape or colour).",
+    ErrorCode.NAME_ERROR: "the program used a name that was never defined.",
+    ErrorCode.TYPE_ERROR: "the program called something with arguments of the wrong kind or number.",
+    ErrorCode.VALUE_ERROR: "the program passed a value of the right kind but not a valid one.",
+    ErrorCode.INDEX_ERROR: "the program indexed a list or sequence outside its length.",
+    ErrorCode.ZERO_DIVISION: "the program divided by zero.",
+    ErrorCode.RUNTIME_ERROR: "the program raised another Python error while it ran.",
+    ErrorCode.DIMENSIONS_MISMATCH: "a piece was put outside the board.",
+    ErrorCode.DEPTH_MISMATCH: "a bridge was put across two cells whose stacks have different heights.",
+    ErrorCode.BRIDGE_PLACEMENT: "a bridge was put above level 2 (bridges go on level 1 or 2).",
+    ErrorCode.SAME_SHAPE_STACKING: "a piece was stacked directly on one of the same shape, which the rules forbid.",
+    ErrorCode.SAME_SHAPE_AT_ALTERNATE_LEVELS: "a piece repeats the shape two levels below it, which the rules forbid.",
+    ErrorCode.NOT_ON_TOP_OF_SCREW: "a piece was put on top of a screw, and nothing goes on a screw.",
+    ErrorCode.MISMATCH_LOCATION: ("the program ran, but a target cell stayed empty or a piece stands where the "
+                                  "target has none."),
+    ErrorCode.MISMATCH_COUNT: "the program ran, but a stack has more or fewer pieces than in the target.",
+    ErrorCode.MISMATCH_SHAPE: "the program ran, but a stack holds other shapes than in the target.",
+    ErrorCode.MISMATCH_ORDER: "the program ran, but a stack holds the right shapes in another order.",
+    ErrorCode.MISMATCH_COLOR: "the program ran, every stack has the right shapes in order, but some colours differ.",
+    ErrorCode.FORBIDDEN: "the program tried something the sandbox does not allow (files, imports, internals).",
+    ErrorCode.TIMEOUT: "the program ran longer than its time or step budget.",
+    ErrorCode.RESOURCE_LIMIT: "the program used more memory or output than its budget allows.",
+    ErrorCode.PARSE_ERROR: "no code was found in the answer, so the episode was not played.",
+    ErrorCode.HARNESS_ERROR: "the harness failed, not the model; left out of the scores.",
+}
+
+
+def category_meaning(category: str | None) -> str:
+    """The plain-words meaning of a recorded category (None and "" mean success); ValueError for
+    an unknown category."""
+    if category in (None, ""):
+        category = SUCCESS_CATEGORY
+    if category != SUCCESS_CATEGORY:
+        category = ErrorCode(category)
+    return MEANINGS[category]
 
 
 def category_family(category: str | None) -> str:
