@@ -54,7 +54,7 @@ def _open(width: float, height: float, kind: str) -> list[str]:
 
 def line_plot(series: dict[tuple[str, str], list[float]], width: int = 640, plot_height: int = 240) -> str:
     """ES (%) after round k, one series (class "series") per (model, mode), the legend underneath."""
-    left, right, top, bottom = 48, 20, 16, 40
+    left, right, top, bottom = 48, 44, 24, 40
     rounds = max((len(v) for v in series.values()), default=1)
     n = len(series)
     step = min(0.05, 0.3 / max(n, 1))  # identical series side by side (a shift of its markers), not on top

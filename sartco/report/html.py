@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import json
 import os
+import urllib.parse
 from collections import Counter, defaultdict
 from pathlib import Path
 
@@ -104,7 +105,7 @@ def examples(results: Path, out: Path, episodes: list[dict]) -> str:
         target = episode_dir(results, e) / "transcript.html"
         if not target.is_file():
             continue
-        href = Path(os.path.relpath(target, out)).as_posix()
+        href = urllib.parse.quote(Path(os.path.relpath(target, out)).as_posix())
         items.append(f"<li>{esc(model)} / {esc(experiment)} / {esc(category)}: "
                      f"<a class='transcript' href='{esc(href)}'>{esc(e['episode'])}</a></li>")
     return "<ul class='examples'>\n" + "\n".join(items) + "\n</ul>\n" if items else "<p>No transcripts found.</p>\n"
