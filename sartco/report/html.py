@@ -21,7 +21,7 @@ from sartco.episode import BUILD_KEY
 
 from . import charts, dialogue_table
 from .charts import esc
-from .completeness import INCOMPLETE_MARK, Completeness
+from .completeness import INCOMPLETE_MARK, RUN_HEADER, Completeness, run_row
 
 NAME = "report.html"
 CATEGORY_COLOURS = ("#d62728", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#bcbd22", "#17becf", "#1f77b4",
@@ -129,13 +129,9 @@ def warnings(found: Completeness, harness_rows: list[dict]) -> str:
 def provenance(found: Completeness) -> str:
     if not found.runs:
         return "<p>No run.json found: generation settings and provenance unknown.</p>\n"
-    header = ["model", "game", "instance file", "sha256", "sartco", "git commit", "clemcore", "generation", "start", "end"]
-    out = ["<table class='provenance'><tr>" + "".join(f"<th>{h}</th>" for h in header) + "</tr>"]
+    out = ["<table class='provenance'><tr>" + "".join(f"<th>{h}</th>" for h in RUN_HEADER) + "</tr>"]
     for (model, game), run in sorted(found.runs.items()):
-        values = [model, game, run["instance_file"]["path"], run["instance_file"]["sha256"][:12], run.get("sartco_version"),
-                  (run.get("git_commit") or "")[:12], run.get("clemcore_version"),
-                  ", ".join(f"{k} {v}" for k, v in (run.get("generation") or {}).items()), run.get("start"), run.get("end")]
-        out.append("<tr>" + "".join(f"<td>{esc('' if v is None else v)}</td>" for v in values) + "</tr>")
+        out.append("<tr>" + "".join(f"<td>{esc('' if v is None else v)}</td>" for v in run_row(model, game, run)) + "</tr>")
     return "\n".join(out) + "</table>\n"
 
 
