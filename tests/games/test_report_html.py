@@ -45,7 +45,7 @@ def test_report_html_in_a_browser(tmp_path):
     write_results(results, "A", [1, 1, 0, 0])
     write_results(results, HOSTILE, [1, 0, 0])
     add_builds(results, "A", {2: "mismatch_location", 3: "mismatch_color"})
-    add_builds(results, HOSTILE, {1: "mismatch_location", 2: "mismatch_location"})
+    add_builds(results, HOSTILE, {1: "mismatch_location", 2: "harness_error"})  # the harness failed: no score
     out.mkdir(parents=True)
     (out / "old_table.md").write_text("stale")      # written by an earlier report (its manifest says so)
     (out / "notes.txt").write_text("mine")          # not the report's: kept
@@ -72,15 +72,17 @@ def test_report_html_in_a_browser(tmp_path):
                 assert answer.status == 200 and b"transcript" in answer.read()
     finally:
         server.shutdown()
-    assert "SARTCo report" in dom and 'id="warning"' in dom and "incomplete" in dom
+    assert "SARTCo report" in dom and 'id="warning"' in dom and "incomplete (" in dom
+    assert f"harness errors (the harness failed, not the model; left out of the scores): {html.escape(HOSTILE)}" in dom
     assert "<b>" not in dom  # the hostile name stayed text in the browser's DOM
-    # one bar per (model, experiment), a segment per category counted
-    assert dom.count('<g class="bar">') == 2 and dom.count('class="segment"') == 3 + 2  # A: success, location, color; B: success, location
-    # the heat map: 8 x 8 squares; (0, 0) and (0, 1) differ in all 4 failed builds, (3, 3) never
+    # one bar per (model, experiment), a segment per category counted:
+    # A: success, location, color; B: success, location, harness
+    assert dom.count('<g class="bar">') == 2 and dom.count('class="segment"') == 3 + 3
+    # the heat map: 8 x 8 squares; (0, 0) and (0, 1) differ in the 3 failed builds (not the harness error), (3, 3) never
     heat = [int(n) for n in re.findall(r'class="heat" data-count="(\d+)"', dom)]
-    assert len(heat) == 64 and heat[0] == heat[1] == 4 and sum(heat) == 8
-    # one transcript per (model, experiment, category): A success, location, color; B success, location
-    assert len(links) == 5
+    assert len(heat) == 64 and heat[0] == heat[1] == 3 and sum(heat) == 6
+    # one transcript per (model, experiment, category): A success, location, color; B success, location, harness
+    assert len(links) == 6
 
 
 def test_line_plot_keeps_identical_series_apart_and_full_names():
