@@ -119,7 +119,8 @@ def warnings(found: Completeness, harness_rows: list[dict]) -> str:
     items = [f"<li>incomplete ({INCOMPLETE_MARK}): {esc(' / '.join(k))}: {found.scored(k)} of {found.expected[k]} "
              f"episodes scored</li>" for k in incomplete]
     items += [f"<li>harness errors (the harness failed, not the model; left out of the scores): {esc(r['model'])} / "
-              f"{esc(r['game'])}: {r['harness_errors']} of {r['episodes']} episodes; {esc(r['first_reason'])}</li>"
+              f"{esc(r['game'])}: {r['harness_errors']} of {r['episodes']} episodes"
+              + (f"; first: {esc(r['first_reason'])}" if r["first_reason"] else "") + "</li>"
               for r in faults]
     items += [f"<li>not checked: {esc(note)}</li>" for note in found.unverifiable]
     return ("<div class='warning' id='warning'><h2>Warning: these results are incomplete or hold harness errors</h2>"
