@@ -60,7 +60,7 @@ def line_plot(series: dict[tuple[str, str], list[float]], width: int = 640, plot
     step = min(0.05, 0.3 / max(n, 1))  # identical series side by side (a shift of its markers), not on top
     def x(k, i=None):
         shift = 0.0 if i is None else (i - (n - 1) / 2) * step
-        return left + (width - left - right) * ((k + shift) / (rounds - 1) if rounds > 1 else 0.5 + shift)
+        return left + 20 + (width - left - right - 40) * ((k + shift) / (rounds - 1) if rounds > 1 else 0.5 + shift)
     def y(v): return top + plot_height * (1 - v / 100.0)
     height = top + plot_height + bottom + LEGEND_LINE * len(series) + 8
     out = _open(width, height, "line-plot")
