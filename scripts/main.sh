@@ -75,3 +75,5 @@ echo
 cat "$SCORES/paper_table3.md"   # the paper protocol beside the paper's figures, then ours (table3.md)
 echo
 cat "$SCORES/repair.md"
+echo
+echo "report (tables, charts, example transcripts; open in a browser): $SCORES/report.html"

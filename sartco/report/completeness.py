@@ -144,17 +144,24 @@ def finish(result: Completeness, out: Path, written: list[str]) -> int:
     return INCOMPLETE_STATUS
 
 
+RUN_HEADER = ["model", "game", "instance file", "sha256", "sartco", "git commit", "clemcore", "generation",
+              "start", "end", "sessions", "played"]
+
+
+def run_row(model: str, game: str, run: dict) -> list:
+    """The provenance of one run.json, in RUN_HEADER's order."""
+    return [model, game, run["instance_file"]["path"], run["instance_file"]["sha256"][:12], run.get("sartco_version"),
+            (run.get("git_commit") or "")[:12], run.get("clemcore_version"),
+            ", ".join(f"{k} {v}" for k, v in (run.get("generation") or {}).items()), run.get("start"), run.get("end"),
+            run["counts"]["sessions"], run["counts"]["episodes_played"]]
+
+
 def runs_markdown(runs: dict[tuple, dict]) -> str:
     """The provenance of each (model, game): one line per run.json."""
     if not runs:
         return ""
-    header = ["model", "game", "instance file", "sha256", "sartco", "git commit", "clemcore", "generation",
-              "start", "end", "sessions", "played"]
-    rows = [[model, game, run["instance_file"]["path"], run["instance_file"]["sha256"][:12], run.get("sartco_version"),
-             (run.get("git_commit") or "")[:12], run.get("clemcore_version"),
-             ", ".join(f"{k} {v}" for k, v in (run.get("generation") or {}).items()), run.get("start"), run.get("end"),
-             run["counts"]["sessions"], run["counts"]["episodes_played"]] for (model, game), run in sorted(runs.items())]
-    return "\n## Provenance (run.json per model and game)\n\n" + markdown_table(header, rows)
+    rows = [run_row(model, game, run) for (model, game), run in sorted(runs.items())]
+    return "\n## Provenance (run.json per model and game)\n\n" + markdown_table(RUN_HEADER, rows)
 
 
 def mark(value, row: dict):

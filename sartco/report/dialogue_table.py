@@ -14,19 +14,18 @@ counts are over the played episodes, the first success round over the episodes t
 """
 from __future__ import annotations
 
-import math
 from collections import defaultdict
 from pathlib import Path
 
 from sartco.episode import (CELL_F1_AT_1, CELL_F1_AT_N, CORRECTIONS_SENT, DESCRIBER_WORDS, DIALOGUE_MODES, DIALOGUE_SCORES,
                             ES_AT_1, ES_AT_N, FIRST_SUCCESS_ROUND, QUESTIONS_ASKED, ROUND_PREFIX, round_score)
 
+from . import charts
 from .files import markdown_table, mean, number, percent, write_csv
 
 HEADER = ["model", "game", "experiment", "mode", "questions", "corrections", "episodes", "played", "es_at_1",
           "es_at_n", "f1_at_1", "f1_at_n", "first_success_round", "questions_asked", "corrections_sent",
           "describer_words"]
-COLOURS = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf")
 
 
 def dialogue_episodes(episodes: list[dict]) -> list[dict]:
@@ -84,44 +83,6 @@ def curves(episodes: list[dict]) -> dict[tuple[str, str], list[float]]:
     return out
 
 
-def svg(series: dict[tuple[str, str], list[float]], width: int = 460, height: int = 260) -> str:
-    """A small line plot: ES (%) after round k, one line (or point) per model pair and mode."""
-    left, right, top, bottom = 44, 170, 16, 36
-    rounds = max((len(v) for v in series.values()), default=1)
-    span = max(rounds - 1, 1)
-    def x(k): return left + (width - left - right) * k / span
-    def y(v): return top + (height - top - bottom) * (1 - v / 100.0)
-    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
-           f'font-family="sans-serif" font-size="11">', f'<rect width="{width}" height="{height}" fill="white"/>']
-    for v in range(0, 101, 25):
-        out.append(f'<line x1="{left}" y1="{y(v):.1f}" x2="{x(span):.1f}" y2="{y(v):.1f}" stroke="#ddd"/>')
-        out.append(f'<text x="{left - 6}" y="{y(v) + 4:.1f}" text-anchor="end">{v}</text>')
-    for k in range(rounds):
-        out.append(f'<text x="{x(k):.1f}" y="{height - bottom + 16}" text-anchor="middle">{k}</text>')
-    out.append(f'<text x="{(left + x(span)) / 2:.1f}" y="{height - 4}" text-anchor="middle">'
-               f'round (corrections sent before the build)</text>')
-    out.append(f'<text x="12" y="{(top + height - bottom) / 2:.1f}" text-anchor="middle" '
-               f'transform="rotate(-90 12 {(top + height - bottom) / 2:.1f})">ES (%)</text>')
-    for i, ((model, mode), values) in enumerate(series.items()):
-        colour = COLOURS[i % len(COLOURS)]
-        points = " ".join(f"{x(k):.1f},{y(v):.1f}" for k, v in enumerate(values) if not math.isnan(v))
-        if len(values) > 1:
-            out.append(f'<polyline points="{points}" fill="none" stroke="{colour}" stroke-width="2"/>')
-        for k, v in enumerate(values):
-            if not math.isnan(v):
-                out.append(f'<circle cx="{x(k):.1f}" cy="{y(v):.1f}" r="3" fill="{colour}"><title>{model} {mode} '
-                           f'round {k}: {v:.1f}</title></circle>')
-        ly = top + 14 * i
-        out.append(f'<rect x="{width - right + 10}" y="{ly}" width="10" height="10" fill="{colour}"/>')
-        out.append(f'<text x="{width - right + 24}" y="{ly + 9}">{_escape(model)} {mode}</text>')
-    out.append("</svg>")
-    return "\n".join(out) + "\n"
-
-
-def _escape(text: str) -> str:
-    return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
-
-
 def write(episodes: list[dict], out: Path) -> list[str]:
     """dialogue.md / .csv / dialogue_rounds.svg from the rows of sartco.report.tables.collect."""
     episodes = dialogue_episodes(episodes)
@@ -129,7 +90,7 @@ def write(episodes: list[dict], out: Path) -> list[str]:
         return []
     rows = rows_of(episodes)
     write_csv(out / "dialogue.csv", HEADER, rows)
-    (out / "dialogue_rounds.svg").write_text(svg(curves(episodes)), encoding="utf-8")
+    (out / "dialogue_rounds.svg").write_text(charts.line_plot(curves(episodes)), encoding="utf-8")
     md = ("# cobot_describe as a dialogue (clarification questions, corrections)\n\n"
           "ES@1 / ES@N, F1@1 / F1@N = execution success and cell F1 (%) after the first / the last build "
           "(aborted = 0); K / R = questions / corrections allowed; first success = mean round of the first "

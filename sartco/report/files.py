@@ -51,3 +51,19 @@ def markdown_table(header: list[str], rows: list[list]) -> str:
     out += ["| " + " | ".join("" if v is None else f"{v:.2f}" if isinstance(v, float) else str(v) for v in r) + " |"
             for r in rows]
     return "\n".join(out) + "\n"
+
+
+MANIFEST = ".report-files"  # the names the last `sartco report` wrote into its --out folder
+
+
+def replace_stale(out: Path, written: list[str]) -> list[str]:
+    """Remove the files an earlier report wrote into `out` that this one did not (only names of
+    the earlier report's manifest: nothing else in the folder is touched), record this report's
+    names; the names removed."""
+    manifest = out / MANIFEST
+    earlier = manifest.read_text(encoding="utf-8").split("\n") if manifest.is_file() else []
+    stale = [n for n in earlier if n and n not in written and "/" not in n and (out / n).is_file()]
+    for name in stale:
+        (out / name).unlink()
+    manifest.write_text("".join(f"{n}\n" for n in written), encoding="utf-8")
+    return stale

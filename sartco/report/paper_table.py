@@ -105,27 +105,34 @@ def markdown(header_rows: tuple[list[str], list[dict]], notes: dict[str, str], w
     lines: dict[tuple, dict] = {}
     for r in rows:
         lines.setdefault(tuple(r[k] for k in (*CELL_KEYS, "source")), {})[r["model"]] = r
-    head = ["instructions", "board", "object", "task", "source"] + [f"{label} {x}" for _, label in columns
-                                                                     for x in ("EM", "CB", "ES")]
-    out = ["| " + " | ".join(head) + " |", "|" + "|".join("---" for _ in head) + "|"]
-    for key, by_model in lines.items():
-        cell = [key[0], key[1], key[2], f"{key[3]} ({key[4]})", key[5]]
-        for model, _ in columns:
-            r = by_model.get(model)
-            cell += ["" if r is None or r[k] is None else f"{r[k]:.2f}" for k in PAPER_SCORES]
-        out.append("| " + " | ".join(cell) + " |")
+    head = ["instructions", "board", "object", "task", "source"] + [label for _, label in columns]
+    tables = []
+    for metric, name in zip(PAPER_SCORES, ("EM", "CB", "ES")):  # one narrow table per metric
+        out = [f"### {name}\n", "| " + " | ".join(head) + " |", "|" + "|".join("---" for _ in head) + "|"]
+        for key, by_model in lines.items():
+            cell = [key[0], key[1], key[2], f"{key[3]} ({key[4]})", key[5]]
+            cell += [_shown(by_model.get(model), metric) for model, _ in columns]
+            out.append("| " + " | ".join(cell) + " |")
+        tables.append("\n".join(out) + "\n")
     text = ("## cobot_instruct_paper: Table 3 in the paper protocol\n\n"
             "EM, CB (CodeBLEU > 0.5 pass rate), ES as shares 0..1, per turn and averaged over a cell's "
             "episodes, as the paper measured them; the paper's figures are the first columns (\"paper ...\"), "
             "the models of these results follow. The paper's model-written rows used the CodeLlama-written "
-            "instructions; GPT-4- and Claude-written instructions have no figure in the paper.\n\n")
-    text += "\n".join(out) + "\n"
+            "instructions; GPT-4- and Claude-written instructions have no figure in the paper (\"no figure\"); "
+            "\"not run\": a cell these results do not hold.\n\n")
+    text += "\n".join(tables)
     if notes:
         text += (f"\n{FLAG} not comparable with the paper, which generated with temperature "
                  f"{wanted['temperature']:g} and at most {wanted['max_tokens']} new tokens "
                  f"(`clem run -t {wanted['temperature']:g} -l {wanted['max_tokens']}`): "
                  + "; ".join(f"{m}: {why}" for m, why in sorted(notes.items())) + ".\n")
     return text
+
+
+def _shown(row: dict | None, metric: str) -> str:
+    if row is None or (not row["paper"] and not row["episodes"]):
+        return "not run"
+    return "no figure" if row[metric] is None else f"{row[metric]:.2f}"
 
 
 def write(episodes: list[dict], out: Path, project_markdown: str, table3_path: Path = TABLE3):

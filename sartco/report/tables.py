@@ -35,8 +35,8 @@ from sartco.episode import (ATTEMPTS, CELL_F1, CODEBLEU, ERROR_CATEGORY, ES_AT_1
                             HARNESS_REASON, MAX_ATTEMPTS)
 from sartco.world import ErrorCode
 
-from . import completeness, dialogue_table, harness_table, intervals, paper_table, passk
-from .files import load_json, markdown_table, number, percent, write_csv
+from . import completeness, dialogue_table, harness_table, html, intervals, paper_table, passk
+from .files import load_json, markdown_table, number, percent, replace_stale, write_csv
 
 # clemgame entries whose cells are rows of another game's Table 3 (the published human- and
 # model-written instructions beside the template ones, as in the paper); every other game name
@@ -195,25 +195,25 @@ def repair(episodes: list[dict]) -> tuple[list[str], list[dict]]:
 
 
 def table3_markdown(rows: list[dict], title: str, keys: list[str]) -> str:
-    """The paper's wide layout: one line per cell, EM / CB / ES per model side by side."""
+    """The paper's layout, narrow: one table per metric (EM, CB, ES), a line per cell, a column per model."""
     models = sorted({r["model"] for r in rows})
     cells: dict[tuple, dict] = {}
     for r in rows:
         cells.setdefault(tuple(r[k] for k in keys), {})[r["model"]] = r
-    header = [k.replace("_", " ") for k in keys] + [f"{m} {x}" for m in models for x in ("EM", "CB", "ES")]
-    body = []
-    for key, by_model in cells.items():
-        line = [TASK_NAMES.get(v, v) if k == "task" else v for k, v in zip(keys, key)]
-        for m in models:
-            r = by_model.get(m)
-            line += [completeness.mark(intervals.shown(r, x), r) for x in ("em", "cb", "es")] if r else ["", "", ""]
-        body.append(line)
+    header = [k.replace("_", " ") for k in keys] + models
+    tables = []
+    for x, name in (("em", "EM"), ("cb", "CB"), ("es", "ES")):
+        body = [[TASK_NAMES.get(v, v) if k == "task" else v for k, v in zip(keys, key)]
+                + [completeness.mark(intervals.shown(by_model[m], x), by_model[m]) if m in by_model else "not run"
+                   for m in models] for key, by_model in cells.items()]
+        tables.append(f"### {title}: {name}\n\n" + markdown_table(header, body))
     played = {m: [r for r in rows if r["model"] == m] for m in models}
     note = "; ".join(f"{m}: {sum(r['episodes'] for r in rs)} episodes, " + intervals.shown_counts(
         round(sum(r["played"] * r["episodes"] / 100 for r in rs)), sum(r["episodes"] for r in rs)) + "% played"
         for m, rs in played.items())
     return (f"## {title}\n\nEM = exact match, CB = CodeBLEU, ES = execution success (%), each `x [lo, hi]` "
-            f"with its 95 % bootstrap interval. {note}.\n\n" + markdown_table(header, body))
+            f"with its 95 % bootstrap interval; \"not run\": a cell the model did not play. {note}.\n\n"
+            + "\n".join(tables))
 
 
 def run(args: argparse.Namespace) -> int:
@@ -227,6 +227,7 @@ def run(args: argparse.Namespace) -> int:
     out.mkdir(parents=True, exist_ok=True)
     written = []
     header, rows = table3(episodes)
+    cells = rows
     write_csv(out / "table3.csv", header, rows)
     md = "# SARTCo results (paper Table 3 layout)\n\n"
     if not rows:
@@ -270,6 +271,9 @@ def run(args: argparse.Namespace) -> int:
     if paper_md:
         print(paper_md)
     written += completeness.write(found, out)
-    print(f"sartco report: {len(everything)} episodes -> " + ", ".join(str(out / w) for w in written))
+    written += html.write(args.results, out, everything, cells, rows, header[4:], found, harness_table.rows(everything))
+    stale = replace_stale(out, written)
+    print(f"sartco report: {len(everything)} episodes -> " + ", ".join(str(out / w) for w in written)
+          + (f"; removed {len(stale)} stale files of an earlier report: " + ", ".join(stale) if stale else ""))
     status = completeness.finish(found, out, written)
     return status or (harness_table.HARNESS_STATUS if faults else 0)

@@ -254,9 +254,9 @@ def test_report_has_the_dialogue_table_and_plot(run):
     rows = {r.split(" | ")[2]: r for r in md.splitlines() if r.startswith("| mock")}
     assert "simple_boards_clarify_correct" in rows and "scripted_correct" in rows
     svg = (run["tables"] / "dialogue_rounds.svg").read_text()
-    assert svg.startswith("<svg") and "mock correct" in svg and "<polyline" in svg
+    assert svg.startswith("<svg") and "mock — correct</text>" in svg and "<polyline" in svg
     table3 = (run["tables"] / "table3.md").read_text()
-    assert "mock ES" in table3 and "clarify" not in table3  # the oneshot experiments only
+    assert ": ES\n" in table3 and "| mock |" in table3 and "clarify" not in table3  # the oneshot experiments only
     import csv
     with (run["tables"] / "dialogue.csv").open() as f:
         by_experiment = {r["experiment"]: r for r in csv.DictReader(f)}
