@@ -5,6 +5,7 @@ import json
 
 import pytest
 
+from sartco.clem.completeness import INCOMPLETE_STATUS
 from sartco.clem.paper import experiment_fields, instance_fields
 from sartco.clem.transcript import display
 from sartco.dataset import SHARED_DATA as DEFAULT_DATA
@@ -116,7 +117,9 @@ def test_a_while_loop_fails_the_paper_es_of_its_turn_but_not_ours(paper_episodes
 def _report(results_dir, out):
     from sartco.report import tables as report
     code = report.run(argparse.Namespace(results=results_dir, out=out, game=None))
-    assert code == 0
+    # the episodes are a slice of the paper's instance file: once `make main` generated that file
+    # (games/cobot_instruct/in/instances_paper.json), the report rightly calls the run incomplete
+    assert code == 0 or (code == INCOMPLETE_STATUS and (out / "completeness.md").exists())
     return (out / "paper_table3.md").read_text()
 
 
