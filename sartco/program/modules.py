@@ -156,15 +156,15 @@ _FACTORIES = {
     "copy": lambda: {"copy": shallow_copy, "deepcopy": deep_copy},
     "operator": lambda: {**{n: getattr(operator, n) for n in _OPERATOR}, "add": budget.add, "mul": budget.mul,
                          "pow": budget.power, "mod": formatting.mod, "lshift": budget.lshift,
-                                 "attrgetter": named.attrgetter, "methodcaller": named.methodcaller},
+                         "attrgetter": named.attrgetter, "methodcaller": named.methodcaller},
     "string": lambda: {n: getattr(string, n) for n in _STRING},
     "numpy": lambda: {**numpy_members.MEMBERS, "int_": INT, "int32": INT, "int64": INT, "float64": float,
                       "float32": float, "pi": math.pi, "e": math.e},
     "random": lambda: dict(chance.MEMBERS),
     "dataclasses": lambda: dict(records.MEMBERS["dataclasses"]),
     "__future__": lambda: {"annotations": True},
+    "json": lambda: dict(JSON_MEMBERS),  # json_module.py
 }
-_FACTORIES["json"] = lambda: dict(JSON_MEMBERS)  # json_module.py
 _MEMBERS_CACHE = {name: make() for name, make in _FACTORIES.items()}
 MEMBERS = {name: frozenset(members) for name, members in _MEMBERS_CACHE.items()}  # for allowed.py and nodes.py
 

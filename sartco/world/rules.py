@@ -81,9 +81,9 @@ def check(board: Board, shape, color, x, y) -> int | None:
         if name is None:
             _fail(E.KEY_ERROR, f"a shape is one of {', '.join(SHAPES)}, not a {type(shape).__name__}")
         _fail(E.KEY_ERROR, f"unknown shape {shape!r:.40}; expected one of {', '.join(SHAPES)}")
-    if type(color) is not str or color not in COLORS:
-        if type(color) is not str:  # (see name above)
-            _fail(E.KEY_ERROR, f"a colour is one of {', '.join(COLORS)}, not a {type(color).__name__}")
+    if type(color) is not str:  # (see name above)
+        _fail(E.KEY_ERROR, f"a colour is one of {', '.join(COLORS)}, not a {type(color).__name__}")
+    if color not in COLORS:
         _fail(E.KEY_ERROR, f"unknown colour {color!r:.40}; expected one of {', '.join(COLORS)}")
     return second
 
