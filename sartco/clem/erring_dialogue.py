@@ -2,8 +2,8 @@
 and the slips):
 
 - ErringDescriber  writes the template instruction, but on a simple board each piece's sentence
-                   is, with probability p, left out ("omitted") or written without its row and
-                   column ("garbled": "Place a red nut."); a regular board's instruction is the
+                   is, with probability p, left out ("omitted") or written without its colour
+                   ("garbled": "Place a nut in the 5th row, 4th column."); a regular board's instruction is the
                    template one. Answers a question with the next missing fact: the full sentence
                    of the next garbled piece, else those of all omitted pieces, else the whole
                    template instruction. Reviews a build like the mock describer, but names each
@@ -25,13 +25,14 @@ from sartco.follower.correct import correction_steps, pieces, read_correction
 from sartco.follower.parse import object_name, placements
 from sartco.follower.regular import arrange
 from sartco.instances.templates import render
+from sartco.world import COLORS
 
 from .dialogue import DONE, Dialogue
 from .erring import RATE, draw_slips, emit_steps, rng_for, slip_arrangement, slip_steps
 from .players import cannot_follow, fenced
 
 _SENTENCE = re.compile(r"(?<=[.!?])\s+")
-_WHERE = re.compile(r"\s+in the \w+ row, \w+ column", re.IGNORECASE)
+_COLOUR = re.compile(rf"\b(?:{'|'.join(COLORS)})\s+")
 
 
 def sentences(text: str) -> list[str]:
@@ -56,7 +57,7 @@ class ErringDescriber:
                 self.omitted.append(sentence)
             else:
                 self.garbled.append(sentence)
-                kept.append(_WHERE.sub("", sentence))
+                kept.append(_COLOUR.sub("", sentence, count=1))
         self.instruction = " ".join(kept)
 
     def answer(self, turn: int) -> str:
