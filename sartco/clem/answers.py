@@ -15,6 +15,7 @@ from typing import Sequence
 
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
 
+from .erring import ErringFollower
 from .players import ERRING, RULEBASED, AnswerSource, cannot_follow, fenced
 
 NO_CODE = "I have no code for this."  # what `mock` says to an episode without gold code
@@ -83,7 +84,6 @@ def instruct_answers(model_name: str, episode: dict, *, paper: bool = False) -> 
         if paper:
             raise ValueError(f"the paper protocol has no rule-based builder ({model_name})")
         if model_name == ERRING:
-            from .erring import ErringFollower  # erring builds on this module
             return ErringFollower(episode)
         return InstructFollower(episode)
     script = episode.get("script") or (episode["mock_answers"] if paper else None)

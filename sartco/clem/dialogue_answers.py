@@ -25,6 +25,7 @@ from sartco.instances.templates import render
 
 from .answers import Scripted, cannot_follow
 from .dialogue import DONE, Dialogue
+from .erring_dialogue import ErringBuilder, ErringDescriber
 from .players import ERRING, RULEBASED, AnswerSource, fenced
 
 
@@ -125,7 +126,6 @@ class DialogueFollower:
 # --- the choice -------------------------------------------------------------------------------------
 def describer_answers(model_name: str, episode: dict, dialogue: Dialogue) -> AnswerSource:
     if model_name == ERRING:
-        from .erring_dialogue import ErringDescriber  # it builds on this module
         return ErringDescriber(episode, dialogue)
     mock = DescriberMock(episode, dialogue)
     script = episode.get("describer_script")
@@ -134,7 +134,6 @@ def describer_answers(model_name: str, episode: dict, dialogue: Dialogue) -> Ans
 
 def builder_answers(model_name: str, episode: dict, dialogue: Dialogue) -> AnswerSource:
     if model_name == ERRING:
-        from .erring_dialogue import ErringBuilder  # it builds on this module
         return ErringBuilder(episode, dialogue)
     follower = DialogueFollower(episode, dialogue)
     script = episode.get("builder_script")
