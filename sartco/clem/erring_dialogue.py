@@ -3,8 +3,9 @@ and the slips):
 
 - ErringDescriber  writes the template instruction, but on a simple board each piece's sentence
                    is, with probability p, left out ("omitted") or written without its colour
-                   ("garbled": "Place a nut in the 5th row, 4th column."); a regular board's instruction is the
-                   template one. Answers a question with the next missing fact: the full sentence
+                   ("garbled": "Place a nut in the 5th row, 4th column."); a regular board's
+                   instruction loses its colour list with probability p ("garbled": "Use only
+                   these colors for the 'bn' object."). Answers a question with the next missing fact: the full sentence
                    of the next garbled piece, else those of all omitted pieces, else the whole
                    template instruction. Reviews a build like the mock describer, but names each
                    removal and addition with probability 1 - p only (the first one always).
@@ -32,6 +33,7 @@ from .erring import RATE, draw_slips, emit_steps, rng_for, slip_arrangement, sli
 from .players import cannot_follow, fenced
 
 _SENTENCE = re.compile(r"(?<=[.!?])\s+")
+_COLOUR_LIST = re.compile(r"colors:\s*\[[^\]]*\]")
 _COLOUR = re.compile(rf"\b(?:{'|'.join(COLORS)})\s+")
 
 
@@ -45,11 +47,16 @@ class ErringDescriber:
         template = episode["template_instruction"]
         self.garbled: list[str] = []   # full sentences of the garbled pieces, not yet answered
         self.omitted: list[str] = []
+        rng = rng_for(episode, "describe")
         if episode["task"] == "repetition":
             self.instruction = template
+            colours = _COLOUR_LIST.search(template)
+            if colours and rng.random() < RATE:
+                self.garbled.append(next(s for s in sentences(template) if colours.group(0) in s))
+                self.instruction = template.replace(colours.group(0), "colors", 1)
             return
         head, *rest = sentences(template)
-        rng, kept = rng_for(episode, "describe"), [head]
+        kept = [head]
         for sentence in rest:
             if rng.random() >= RATE:
                 kept.append(sentence)
