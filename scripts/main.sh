@@ -16,11 +16,17 @@
 #                             the rule-based follower does not write the authors' answer format)
 #   cobot_instruct_ablations, cobot_instruct_feedback   val-split ablations, execution feedback and
 #                             repair: mock only (rulebased repeats its template numbers there)
-# Settings (environment): RESULTS (results), MODELS ("mock rulebased"), SCORES (scores).
+#   cobot_instruct_feedback, cobot_describe_dialogue   also by `erring` (sartco.clem.erring: the
+#                             rule-based players with seeded mistakes, p = 0.3, seed 42), whose
+#                             repairs, questions and corrections give the repair and dialogue tables
+#                             real recovery curves (about 4 min: play 1, score+transcribe 1, eval 2)
+# Settings (environment): RESULTS (results), MODELS ("mock rulebased"), ERRING ("erring"; "" skips
+# it), SCORES (scores).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 RESULTS="${RESULTS:-results}"
 MODELS="${MODELS:-mock rulebased}"
+ERRING="${ERRING-erring}"
 SCORES="${SCORES:-scores}"
 SHARED="../shared/sartco-data/published"
 test -d "$SHARED" || { echo "make main needs the published SARTCo data at $SHARED" >&2; exit 2; }
@@ -55,6 +61,10 @@ done
 play cobot_instruct_paper "$FIRST" -t 0 -l 250
 play cobot_instruct_ablations "$FIRST"
 play cobot_instruct_feedback "$FIRST"
+for MODEL in $ERRING; do
+  play cobot_instruct_feedback "$MODEL"
+  play cobot_describe_dialogue "$MODEL"
+done
 
 step "scoring, transcribing, evaluating"
 run clem score -r "$RESULTS"

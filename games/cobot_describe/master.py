@@ -8,7 +8,8 @@ describer's instruction, sartco.clem.players; its code runs through sartco.clem.
 `clem run -g cobot_describe -m A B`: A describes, B builds; `-m A`: A plays both roles.
 Programmatic players (sartco.clem.dialogue_answers): `mock` and `rulebased` describe with the
 episode's template instruction; as builders both are the rule-based follower reading the
-describer's text (never gold code).
+describer's text (never gold code); `erring` omits and garbles pieces as describer and slips as
+builder (sartco.clem.erring_dialogue).
 
 Episode = one instance of in/instances.json (instancegenerator.py; sartco.episode.DescribeEpisode):
   describer_prompt      the Describer's prompt
@@ -59,7 +60,7 @@ class CobotDescribe(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameMas
         self.dialogue = Dialogue(DialogueLog(self.settings.mode, self.settings.questions, self.settings.corrections))
         describer_model = self.player_models[0]
         builder_model = self.player_models[1] if len(self.player_models) > 1 else describer_model
-        self.describer = Describer(describer_model, describer_answers(instance, self.dialogue))
+        self.describer = Describer(describer_model, describer_answers(describer_model.name, instance, self.dialogue))
         self.builder = Builder(builder_model, builder_answers(builder_model.name, instance, self.dialogue))
         self.add_player(self.describer, initial_context=instance["describer_prompt"])
         self.add_player(self.builder)

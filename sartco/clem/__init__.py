@@ -17,7 +17,9 @@ live inside a game folder). Reuse these from any game whose player writes code:
 - paper.finish_paper / PaperScorer     the paper protocol (cobot_instruct_paper): the authors' per-turn
                                        reading and scores at the end of a dialogue, ours beside them
 - pictures.attach_all                  full-size board pictures (the transcript's links), written at `clem score`
-- rulebased.RulebasedBackend           `-m rulebased` (the rule-based follower as a model)
+- rulebased.RulebasedBackend           `-m rulebased` (the rule-based follower as a model) and
+                                       `-m erring` (erring, erring_dialogue: the same players with
+                                       seeded mistakes and repairs)
 - packaged                             the backends and model entries in clem/backends/ that
                                        clemcore finds wherever sartco is installed
 - benchmark.BuildBenchmark             the GameBenchmark base; checks the instance file up front

@@ -7,6 +7,7 @@ one chosen for a player when it is made, and cobot_instruct's choice (`instruct_
 - InstructFollower   the rule-based follower (`rulebased`) on cobot_instruct's instructions:
               one turn's puts per multi-turn instruction, then (a repair after feedback) the
               whole program
+- ErringFollower     the same with seeded slips and repairs (`erring`, sartco.clem.erring)
 """
 from __future__ import annotations
 
@@ -14,7 +15,8 @@ from typing import Sequence
 
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
 
-from .players import RULEBASED, AnswerSource, fenced
+from .erring import ErringFollower
+from .players import ERRING, RULEBASED, AnswerSource, cannot_follow, fenced
 
 NO_CODE = "I have no code for this."  # what `mock` says to an episode without gold code
 
@@ -72,19 +74,17 @@ def rulebased_code(instructions, task: str, given_code: str = "", rows: int = DE
         return cannot_follow(error)
 
 
-def cannot_follow(error) -> str:
-    """The rule-based follower's answer to instructions it cannot read (a comment: it builds nothing)."""
-    return f"# I cannot follow these instructions: {error}"
-
-
 def instruct_answers(model_name: str, episode: dict, *, paper: bool = False) -> AnswerSource:
-    """cobot_instruct's builder: `rulebased` follows the instructions; `mock` answers an episode's
+    """cobot_instruct's builder: `rulebased` follows the instructions, `erring` with slips
+    (sartco.clem.erring); `mock` answers an episode's
     `script` (scripted tests), the paper protocol's `mock_answers` (the authors' gold in their
     label format), else the gold code. ValueError: the paper protocol has no rule-based builder
-    (the follower does not write the authors' answer format)."""
-    if model_name == RULEBASED:
+    (the follower does not write the authors' answer format), nor an erring one."""
+    if model_name in (RULEBASED, ERRING):
         if paper:
-            raise ValueError("the paper protocol has no rule-based builder")
+            raise ValueError(f"the paper protocol has no rule-based builder ({model_name})")
+        if model_name == ERRING:
+            return ErringFollower(episode)
         return InstructFollower(episode)
     script = episode.get("script") or (episode["mock_answers"] if paper else None)
     return Scripted(script) if script else GoldCode(episode.get("gold_turns", ()))

@@ -8,6 +8,8 @@ sartco.clem.players.AnswerSource), chosen once when the players are made:
                     describer said (rulebased_turn on a BuilderView): code, or a question when it
                     cannot read the instruction (there is no gold answer for instructions written
                     during the game)
+- ErringDescriber / ErringBuilder   `erring`: the same with seeded omissions, garbles and slips
+                    (sartco.clem.erring_dialogue)
 - describer_answers / builder_answers   the choice, with the episode's `describer_script` /
   `builder_script` answered first (scripted tests; `rulebased` as builder ignores the script)
 Both read what they heard from the episode's Dialogue record (sartco.clem.dialogue), which the game
@@ -23,7 +25,8 @@ from sartco.instances.templates import render
 
 from .answers import Scripted, cannot_follow
 from .dialogue import DONE, Dialogue
-from .players import RULEBASED, AnswerSource, fenced
+from .erring_dialogue import ErringBuilder, ErringDescriber
+from .players import ERRING, RULEBASED, AnswerSource, fenced
 
 
 # --- the mock describer -----------------------------------------------------------------------------
@@ -121,13 +124,17 @@ class DialogueFollower:
 
 
 # --- the choice -------------------------------------------------------------------------------------
-def describer_answers(episode: dict, dialogue: Dialogue) -> AnswerSource:
+def describer_answers(model_name: str, episode: dict, dialogue: Dialogue) -> AnswerSource:
+    if model_name == ERRING:
+        return ErringDescriber(episode, dialogue)
     mock = DescriberMock(episode, dialogue)
     script = episode.get("describer_script")
     return Scripted(script, then=mock) if script else mock
 
 
 def builder_answers(model_name: str, episode: dict, dialogue: Dialogue) -> AnswerSource:
+    if model_name == ERRING:
+        return ErringBuilder(episode, dialogue)
     follower = DialogueFollower(episode, dialogue)
     script = episode.get("builder_script")
     return Scripted(script, then=follower) if script and model_name != RULEBASED else follower

@@ -2,7 +2,7 @@
 
 A player answers in one of three ways (clemcore's Player):
 - a clemcore model: the model (the game master parses its answer);
-- `mock`, `programmatic`, `rulebased` (CustomResponseModel): the player's answer source, an object
+- `mock`, `programmatic`, `rulebased`, `erring` (CustomResponseModel): the player's answer source, an object
   chosen once when the player is made (sartco.clem.answers for cobot_instruct's builder,
   sartco.clem.dialogue_answers for cobot_describe's players): `answers.answer(turn)`;
 - `human`: the terminal; type the answer, end with a line holding only "." (or end of input).
@@ -17,6 +17,7 @@ from clemcore.clemgame import Player
 from sartco.text import escape, escape_all
 
 RULEBASED = "rulebased"  # the model name of the rule-based follower (sartco.clem.rulebased)
+ERRING = "erring"        # the model name of the rule-based players that make mistakes (sartco.clem.erring)
 
 
 class AnswerSource(Protocol):
@@ -27,6 +28,11 @@ class AnswerSource(Protocol):
 def fenced(code: str) -> str:
     """An answer as a careful model would give it."""
     return f"```python\n{code.strip()}\n```"
+
+
+def cannot_follow(error) -> str:
+    """The rule-based follower's answer to instructions it cannot read (a comment: it builds nothing)."""
+    return f"# I cannot follow these instructions: {error}"
 
 
 class SourcedPlayer(Player):

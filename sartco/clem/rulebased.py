@@ -5,13 +5,15 @@ cobot_instruct -m rulebased`. Registered wherever sartco is installed by the pac
 
 The model is a CustomResponseModel, so clemcore's Player answers from the player's answer source,
 chosen by this model name when the player is made (sartco.clem.answers.instruct_answers: the
-follower instead of the gold code; sartco.clem.dialogue_answers in cobot_describe).
+follower instead of the gold code; sartco.clem.dialogue_answers in cobot_describe). The same
+backend serves `erring` (entry {"model_name": "erring", "backend": "rulebased"}): the follower
+with seeded mistakes (sartco.clem.erring).
 """
 from __future__ import annotations
 
 from clemcore.backends import Backend, CustomResponseModel, Model, ModelSpec
 
-from .players import RULEBASED
+from .players import ERRING, RULEBASED
 
 
 class RulebasedModel(CustomResponseModel):
@@ -22,6 +24,7 @@ class RulebasedModel(CustomResponseModel):
 
 class RulebasedBackend(Backend):
     def get_model_for(self, model_spec: ModelSpec) -> Model:
-        if model_spec.model_name != RULEBASED:
-            raise ValueError(f"the rulebased backend serves only the model '{RULEBASED}', not {model_spec.model_name!r}")
+        if model_spec.model_name not in (RULEBASED, ERRING):
+            raise ValueError(f"the rulebased backend serves only the models '{RULEBASED}' and '{ERRING}', "
+                             f"not {model_spec.model_name!r}")
         return RulebasedModel(model_spec)

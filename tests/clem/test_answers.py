@@ -55,7 +55,7 @@ def test_describe_sources_read_what_was_said():
     experiments = json.loads((REPO / "games" / "cobot_describe" / "in" / "instances_slice.json").read_text())
     episode = experiments["experiments"][0]["game_instances"][0]
     dialogue = Dialogue(DialogueLog("clarify", 2, 0))
-    describer = describer_answers(episode, dialogue)
+    describer = describer_answers("mock", episode, dialogue)
     assert isinstance(describer, DescriberMock)
     assert describer.answer(0) == f"Instruction: {episode['template_instruction']}"
     dialogue.expect = "answer"
