@@ -59,11 +59,11 @@ def _row(model: str, cell: tuple, boards: list[dict[str, float]]) -> dict:
     none = sum(all(v == 0.0 for v in b.values()) for b in boards)
     lo, hi = intervals.interval([1.0] * every + [0.0] * (n - every))
     sources = [s for s in SOURCES if any(s in b for b in boards)]
-    es = {s: round(100 * sum(b[s] for b in boards if s in b) / sum(s in b for b in boards), 2) for s in sources}
+    es = {s: 100 * sum(b[s] for b in boards if s in b) / sum(s in b for b in boards) for s in sources}
     return {"model": model, "board_type": cell[0], "object_type": cell[1], "task": cell[2], "boards": n,
             "sources": " ".join(sources), "all": round(100 * every / n, 2), "all_lo": round(100 * lo, 2),
             "all_hi": round(100 * hi, 2), "some": round(100 * (n - every - none) / n, 2),
-            "none": round(100 * none / n, 2), **{f"es_{s}": es.get(s, "") for s in SOURCES},
+            "none": round(100 * none / n, 2), **{f"es_{s}": round(es[s], 2) if s in es else "" for s in SOURCES},
             "spread": round(max(es.values()) - min(es.values()), 2)}
 
 
