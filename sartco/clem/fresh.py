@@ -60,5 +60,5 @@ class FreshInstanceGenerator(InstructGenerator):
                 self.add_episodes(exp, records[:per_experiment], task, SOURCE, pool, seed, n_examples)
         print(f"fresh boards (seed {fresh_seed}): {sum(report.boards.values())} "
               f"({', '.join(f'{k} {n}' for k, n in report.boards.items())}); also in the published data or the "
-              f"seed-42 dataset: {report.overlap}; draws rejected for hitting one: {report.rejected}; "
+              f"seed-42 dataset: {report.overlap}; candidates rejected for being one: {report.rejected}; "
               f"stratum fallbacks: {report.fallbacks}")

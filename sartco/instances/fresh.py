@@ -44,8 +44,8 @@ def board_keys(*datasets: dict[str, list[BoardRecord]]) -> set[str]:
 
 @dataclass
 class FreshReport:
-    """What a fresh draw met: rejected draws that hit an excluded board, fallbacks, the overlap left."""
-    rejected: int = 0
+    """What a fresh draw met: candidates that were excluded boards, fallbacks, the overlap left."""
+    rejected: int = 0                     # candidates drawn or listed that were excluded boards
     fallbacks: int = 0
     overlap: int = 0                      # fresh boards found in the excluded datasets (0 by construction)
     boards: Counter = field(default_factory=Counter)   # kind key -> fresh boards
