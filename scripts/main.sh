@@ -58,6 +58,14 @@ for MODEL in $MODELS; do
   play cobot_describe "$MODEL"
   play cobot_describe_dialogue "$MODEL"
 done
+# fresh boards (issue 24 item 3, sartco.clem.fresh): cobot_instruct_fresh, the published test boards beside as
+# many fresh boards of FRESH_SEED (same strata; in no published and no seed-42 file: the overlap count printed),
+# template instructions, every model: contamination.md; with cobot_instruct_published: robustness.md
+FRESH_SEED="${FRESH_SEED:-7}"
+step "fresh boards (seed $FRESH_SEED)"
+run python games/cobot_instruct/instancegenerator.py --fresh "$FRESH_SEED"
+grep "^fresh boards" "$LOG" | tail -1   # how many, and the overlap with the published and seed-42 boards (0)
+for MODEL in $MODELS; do play cobot_instruct_fresh "$MODEL"; done
 play cobot_instruct_paper "$FIRST" -t 0 -l 250
 play cobot_instruct_ablations "$FIRST"
 play cobot_instruct_feedback "$FIRST"
@@ -86,4 +94,5 @@ cat "$SCORES/paper_table3.md"   # the paper protocol beside the paper's figures,
 echo
 cat "$SCORES/repair.md"
 echo
+cat "$SCORES/contamination.md"; echo; cat "$SCORES/robustness.md"; echo   # issue 24 items 3-4
 echo "report (tables, charts, example transcripts; open in a browser): $SCORES/report.html"

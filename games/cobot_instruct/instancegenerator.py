@@ -5,6 +5,8 @@
     python games/cobot_instruct/instancegenerator.py --published instances/published
                                                # in/instances_published.json + ..._published_feedback.json
     python games/cobot_instruct/instancegenerator.py --protocol paper   # in/instances_paper.json
+    python games/cobot_instruct/instancegenerator.py --fresh SEED [--fresh-episodes N]
+                                               # in/instances_fresh.json (published vs fresh boards, sartco.clem.fresh)
     python games/cobot_instruct/instancegenerator.py --train [--train-episodes N]
                                                # in/instances_train.json (training, sartco.clem.training)
 
@@ -60,12 +62,12 @@ import os
 import sys
 from pathlib import Path
 
-from sartco.clem.episodes import instruct_episode
+from sartco.clem.fresh import FreshInstanceGenerator
 from sartco.clem.instance_values import InstanceGenerator
+from sartco.clem.instruct_generator import FEEDBACK_SUFFIX, InstructGenerator
 from sartco.dataset import BOARD_KINDS, DESCRIBED_TASK, REGULAR_COMPLEX, REGULAR_SIMPLE, SIMPLE, BoardKind, board_kind
-from sartco.episode import InstructExperiment
 from sartco.errors import UserError
-from sartco.instances.examples import MAX_EXAMPLES, select_examples
+from sartco.instances.examples import MAX_EXAMPLES
 from sartco.instances.storage import load_dataset
 from sartco.instances.prompts import SECTIONS
 
@@ -74,7 +76,6 @@ REPO = GAME_DIR.parents[1]
 N_EXAMPLES = 5          # in-context examples in the Table 3 experiments
 ABLATION_EPISODES = 10  # episodes per ablation experiment (val split)
 FEEDBACK_ATTEMPTS = 3   # attempts per episode in the feedback experiments
-FEEDBACK_SUFFIX = "_feedback"
 SMOKE_EPISODES = 2      # episodes per Table 3 cell in in/instances_smoke.json
 
 # the cells of the paper's Table 3: (board kind, task, sources from the generated data, from the published data)
@@ -131,31 +132,11 @@ class PaperInstanceGenerator(InstanceGenerator):
                 self.add_game_instance(exp, game_id).update(instance_fields(episode))
 
 
-class CobotInstructInstanceGenerator(InstanceGenerator):
+class CobotInstructInstanceGenerator(InstructGenerator):
+    """experiment() and add_episodes(): sartco.clem.instruct_generator."""
 
     def __init__(self, feedback_attempts: int | None = None):
-        """feedback_attempts: None for the paper's experiments; N >= 2 for the feedback experiments
-        (the Table 3 cells only, named <cell>_feedback, N attempts per episode)."""
-        super().__init__(str(GAME_DIR))
-        self.feedback_attempts = feedback_attempts
-
-    def experiment(self, name: str, kind: BoardKind, task: str, source: str, split: str, dataset: dict,
-                   ablation: dict | None = None):
-        feedback = {}
-        if self.feedback_attempts is not None:
-            feedback = {"attempts": self.feedback_attempts, "feedback_of": name}
-            name += FEEDBACK_SUFFIX
-        exp = self.add_experiment(name)
-        exp.update(InstructExperiment(board_type=kind.board, object_type=kind.object, task=task, source=source,
-                                      split=split, ablation=ablation, **feedback, dataset=dataset))
-        exp.move_to_end("game_instances")
-        return exp
-
-    def add_episodes(self, exp, items, task, source, pool, seed, k, sections=SECTIONS):
-        for game_id, record in enumerate(items):
-            examples = select_examples(record, pool, k, seed) if "examples" in sections else []
-            inst = self.add_game_instance(exp, game_id)
-            inst.update(instruct_episode(record, task, source, examples, sections))
+        super().__init__(str(GAME_DIR), feedback_attempts)
 
     def on_generate(self, seed: int, dataset_dir: Path, published_dir: Path | None = None,
                     n_examples: int = N_EXAMPLES, ablation_episodes: int = ABLATION_EPISODES,
@@ -249,6 +230,9 @@ def main(argv=None) -> int:
                         help="write in/instances_train.json (the train split, for training) instead")
     parser.add_argument("--train-episodes", type=int, default=0,
                         help="with --train: episodes per cell (default 0: every train board)")
+    parser.add_argument("--fresh", type=int, default=None, metavar="SEED",
+                        help="write in/instances_fresh.json: the published test boards beside fresh boards of SEED")
+    parser.add_argument("--fresh-episodes", type=int, default=0, help="with --fresh: boards per cell (0: all)")
     args = parser.parse_args(argv)
     if args.attempts < 2:
         print(f"instancegenerator: --attempts must be at least 2, not {args.attempts}", file=sys.stderr)
@@ -260,6 +244,11 @@ def main(argv=None) -> int:
     if args.smoke < 1:
         print(f"instancegenerator: --smoke must be at least 1, not {args.smoke}", file=sys.stderr)
         return 2
+    if args.fresh is not None:
+        return 0 if _write(FreshInstanceGenerator(str(GAME_DIR), CELLS), "instances_fresh.json", seed=args.seed,
+                           dataset_dir=args.dataset.resolve(), n_examples=args.examples, fresh_seed=args.fresh,
+                           published_dir=args.published.resolve() if args.published else None,
+                           per_experiment=args.fresh_episodes or None) else 2
     if args.describers is not None:
         outputs = [("instances_describers.json", None, {})]
     elif args.published is not None:

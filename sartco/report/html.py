@@ -161,8 +161,8 @@ def game_section(game: str, results: Path, out: Path, episodes: list[dict], tabl
 
 
 def write(results: Path, out: Path, everything: list[dict], table_rows: list[dict], error_rows: list[dict],
-          categories: list[str], found: Completeness, harness_rows: list[dict]) -> list[str]:
-    """Write out/report.html; the names written."""
+          categories: list[str], found: Completeness, harness_rows: list[dict], extra: str = "") -> list[str]:
+    """Write out/report.html; the names written. extra: sections (HTML, escaped) after the games'."""
     colours = category_colours(categories)
     where = Path(os.path.relpath(results.resolve(), out.resolve())).as_posix()
     by_game: dict[str, list] = defaultdict(list)
@@ -174,6 +174,7 @@ def write(results: Path, out: Path, everything: list[dict], table_rows: list[dic
             warnings(found, harness_rows),
             "<p>Games: " + ", ".join(f"<a href='#{esc(g)}'>{esc(g)}</a>" for g in games) + "</p>"]
     body += [game_section(g, results, out, everything, by_game.get(g, []), error_rows, colours) for g in games]
+    body.append(extra)
     body.append("<h2>Generation settings and provenance (run.json)</h2>" + provenance(found))
     page = (f"<!DOCTYPE html>\n<html lang='en'><head><meta charset='utf-8'><title>SARTCo report</title>"
             f"<style>{STYLE}</style></head><body>\n" + "\n".join(body) + "\n</body></html>\n")

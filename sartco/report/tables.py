@@ -35,7 +35,7 @@ from sartco.episode import (ATTEMPTS, CELL_F1, CODEBLEU, ERROR_CATEGORY, ES_AT_1
                             HARNESS_REASON, MAX_ATTEMPTS)
 from sartco.world import ErrorCode
 
-from . import completeness, dialogue_table, harness_table, html, intervals, paper_table, passk
+from . import completeness, contamination, dialogue_table, harness_table, html, intervals, paper_table, passk, robustness
 from .files import load_json, markdown_table, number, percent, replace_stale, write_csv
 
 # clemgame entries whose cells are rows of another game's Table 3 (the published human- and
@@ -121,7 +121,7 @@ def table3(episodes: list[dict]) -> tuple[list[str], list[dict]]:
     """Long rows (one per cell and model) of the paper's Table 3."""
     groups: dict[tuple, list] = defaultdict(list)
     for e in episodes:
-        if e["ablation"] or e["max_attempts"] > 1 or e["mode"] != "oneshot":  # dialogue modes: dialogue.md
+        if e["ablation"] or e["max_attempts"] > 1 or e["mode"] != "oneshot" or contamination.boards_of(e):
             continue
         game = TABLE3_GAME.get(e["game"], e["game"])
         groups[(game, e["board_type"], e["object_type"], e["task"], e["source"], e["split"], e["model"])].append(e)
@@ -260,6 +260,9 @@ def run(args: argparse.Namespace) -> int:
         (out / "repair.md").write_text(md, encoding="utf-8")
         written += ["repair.md", "repair.csv"]
     written += dialogue_table.write(episodes, out)  # cobot_describe's dialogue modes
+    files, extra = contamination.write(episodes, out)  # published vs fresh boards; robustness across sources
+    more, extra_robust = robustness.write(args.results, episodes, out)
+    written += files + more
     written += passk.write(args.results, out)  # pass@k of `sartco sample`'s runs (RESULTS/samples/s1..sN)
     header, rows = errors(everything)
     write_csv(out / "errors.csv", header, rows)
@@ -271,7 +274,8 @@ def run(args: argparse.Namespace) -> int:
     if paper_md:
         print(paper_md)
     written += completeness.write(found, out)
-    written += html.write(args.results, out, everything, cells, rows, header[4:], found, harness_table.rows(everything))
+    written += html.write(args.results, out, everything, cells, rows, header[4:], found, harness_table.rows(everything),
+                         extra + extra_robust)
     stale = replace_stale(out, written)
     print(f"sartco report: {len(everything)} episodes -> " + ", ".join(str(out / w) for w in written)
           + (f"; removed {len(stale)} stale files of an earlier report: " + ", ".join(stale) if stale else ""))

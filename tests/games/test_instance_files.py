@@ -18,7 +18,7 @@ def test_each_entry_names_its_own_instance_file():
     entries = {e["game_name"]: e for e in json.loads((GAME / "clemgame.json").read_text())}
     assert {name: e["instances"] for name, e in entries.items()} == {
         "cobot_instruct": "instances", "cobot_instruct_published": "instances_published",
-        "cobot_instruct_paper": "instances_paper",
+        "cobot_instruct_paper": "instances_paper", "cobot_instruct_fresh": "instances_fresh",
         "cobot_instruct_ablations": "instances_ablations", "cobot_instruct_feedback": "instances_feedback",
         "cobot_instruct_published_feedback": "instances_published_feedback",
         "cobot_instruct_train": "instances_train"}
