@@ -14,7 +14,7 @@ from sartco.instances.storage import load_dataset
 from sartco.published import importer
 from sartco.published.files import GOLD_BOARDS, PUBLISHED
 
-from conftest import ROOT
+ROOT = __import__("pathlib").Path(__file__).resolve().parents[2]
 
 pytestmark = pytest.mark.skipif(not PUBLISHED.is_dir(), reason=f"published SARTCo data not found at {PUBLISHED}")
 
