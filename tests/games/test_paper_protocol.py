@@ -136,12 +136,16 @@ def test_report_puts_the_run_beside_the_papers_figures(paper_episodes, play_epis
     table3 = json.loads((DEFAULT_DATA / "paper-protocol" / "table3.json").read_text())
     first = [line for line in md.splitlines() if "first_order (multi_turn)" in line]  # EM, CB, ES tables
     paper = table3["cells"][0]["scores"]
-    assert len(first) == 3 and all(line.startswith("| template | simple | simple | first_order (multi_turn) | template | ")
+    # EM, CB, ES, then ours beyond the paper: ES leak-free and FG (no paper figure; no probes here)
+    assert len(first) == 5 and all(line.startswith("| template | simple | simple | first_order (multi_turn) | template | ")
                                    for line in first)
-    for i, line in enumerate(first):
+    for i, line in enumerate(first[:3]):
         assert line.endswith(" | " + " | ".join(f"{paper[m][i]:.2f}" for m in ("codellama", "gpt4", "claude")) + " | 1.00 |")
+    assert first[3].endswith("| no figure | no figure | no figure | 1.00 |")
+    assert first[4].endswith("| no figure | no figure | no figure | n/a |")
     human = [line for line in md.splitlines() if "repetition (regular_hai)" in line and " regular | simple |" in line]
-    assert [line[-8:] for line in human] == ["| 0.00 |", "| 1.00 |", "| 1.00 |"]  # mock: EM 0, CB 1, ES 1
+    # mock: EM 0, CB 1, ES 1; its loop alone names a function it never defines (leak-free ES 0); FG 1
+    assert [line[-8:] for line in human] == ["| 0.00 |", "| 1.00 |", "| 1.00 |", "| 0.00 |", "| 1.00 |"]
     assert "(!)" not in md
     assert "# SARTCo results (paper Table 3 layout)" in md  # the project-protocol table follows
 
