@@ -121,10 +121,10 @@ class PaperScorer(BuildScorer):
             return
         for key, name in PAPER_SCORES.items():
             self.log_episode_score(name, float(paper[key]))
-        if "es_leak_free" in paper:
-            self.log_episode_score(LEAK_FREE_ES, float(paper["es_leak_free"]))
             for turn in paper["turns"]:
                 self.log_round_score(turn["turn"], name, int(turn[key]))
+        if "es_leak_free" in paper:
+            self.log_episode_score(LEAK_FREE_ES, float(paper["es_leak_free"]))
 
     def bench_score(self, interactions: dict, record) -> float:
         paper = interactions.get(PAPER_KEY)
