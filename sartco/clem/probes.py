@@ -22,9 +22,10 @@ The arguments (`draw_arguments`): candidates drawn by random.Random(f"{seed}/{bo
 combo name has one letter per piece); a candidate is kept when the gold function builds at it
 without error, no piece lies directly on a piece of its colour, and its board differs from the
 episode's target (so never the episode's own arguments) and from the kept ones. K (instance
-field `probes`, default DEFAULT_PROBES; 0 turns the probes off) of CANDIDATES x K candidates,
-in draw order. Every program runs in the sandbox (sartco.program.execute_many): one batch for
-the gold candidates, one for the K probes; a harness_error raises HarnessFault.
+field `probes`, default DEFAULT_PROBES; 0 turns the probes off), the first kept in draw order,
+from rounds of CANDIDATES x K candidates (ROUNDS at most). Every program runs in the sandbox
+(sartco.program.execute_many): one batch per round of gold candidates (mostly one), one for the
+K probes; a harness_error raises HarnessFault.
 
 sequence_function episodes are not probed: their gold function (and the prompt's examples)
 hard-code the puts and ignore the arguments by the task's design, so there is no general gold
@@ -43,7 +44,8 @@ from .outcomes import HarnessFault
 PROBED_TASKS = ("optimal_function", "repetition")
 DEFAULT_PROBES = 8
 PROBE_SEED = 0
-CANDIDATES = 4                 # candidates drawn per probe wanted
+CANDIDATES = 2                 # candidates drawn per probe wanted, per round
+ROUNDS = 8                     # rounds of candidates at most (about half are kept; under a quarter for tall stacks)
 NO_FUNCTION = "no_function"    # a probe's category when the answer calls no function of the program
 
 
@@ -118,22 +120,26 @@ def _plain_colours(cells: dict) -> bool:
 
 
 def draw_arguments(instance: dict, gold: str, name: str, k: int, seed: int = PROBE_SEED) -> list[tuple[dict, dict]]:
-    """Up to k (arguments, gold board) pairs (module doc), the same for a seed on every run."""
+    """Up to k (arguments, gold board) pairs (module doc), the same for a seed on every run:
+    rounds of CANDIDATES x k candidates, one sandbox batch each, until k are kept (ROUNDS at most)."""
     from sartco.program import execute_many
 
     rows, cols, n = instance["rows"], instance["cols"], len(combo_of(instance))
     rng = random.Random(f"{seed}/{instance['board_id']}/{instance['task']}")
-    candidates = [{"colors": [rng.choice(COLORS) for _ in range(n)], "x": rng.randrange(rows),
-                   "y": rng.randrange(cols)} for _ in range(CANDIDATES * k)]
-    runs = execute_many([probe_program(gold, name, a, given_code=instance["given_code"], rows=rows, cols=cols)
-                         for a in candidates], rows, cols)
     kept, boards = [], [instance["target"]]
-    for args, ex in zip(candidates, runs):
-        if ex.error == ErrorCode.HARNESS_ERROR:
-            raise HarnessFault(f"sandbox (gold probe): {ex.message}")
-        if ex.ok and _plain_colours(ex.cells) and ex.cells not in boards and len(kept) < k:
-            kept.append((args, ex.cells))
-            boards.append(ex.cells)
+    for _ in range(ROUNDS):
+        candidates = [{"colors": [rng.choice(COLORS) for _ in range(n)], "x": rng.randrange(rows),
+                       "y": rng.randrange(cols)} for _ in range(CANDIDATES * k)]
+        runs = execute_many([probe_program(gold, name, a, given_code=instance["given_code"], rows=rows, cols=cols)
+                             for a in candidates], rows, cols)
+        for args, ex in zip(candidates, runs):
+            if ex.error == ErrorCode.HARNESS_ERROR:
+                raise HarnessFault(f"sandbox (gold probe): {ex.message}")
+            if ex.ok and _plain_colours(ex.cells) and ex.cells not in boards and len(kept) < k:
+                kept.append((args, ex.cells))
+                boards.append(ex.cells)
+        if len(kept) == k:
+            break
     return kept
 
 
