@@ -3,6 +3,9 @@ K held-out arguments in the sandbox and compared with the gold function's boards
 from __future__ import annotations
 
 import json
+import os
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -57,6 +60,12 @@ def test_a_general_function_passes_es_and_every_probe(optimal):
 def test_probe_arguments_are_held_out_valid_and_byte_identical_across_runs(optimal):
     a, b = run_probes(optimal, GENERAL), run_probes(optimal, GENERAL)
     assert json.dumps(a, sort_keys=True) == json.dumps(b, sort_keys=True)
+    # another interpreter, another hash seed, no sandbox cache shared: the same bytes
+    script = ("import json, sys; from sartco.clem.probes import run_probes; "
+              "ep, code = json.load(sys.stdin); print(json.dumps(run_probes(ep, code), sort_keys=True))")
+    other = subprocess.run([sys.executable, "-c", script], input=json.dumps([optimal, GENERAL]), text=True,
+                           capture_output=True, env={**os.environ, "PYTHONHASHSEED": "123"}, check=True, timeout=300)
+    assert other.stdout.strip() == json.dumps(a, sort_keys=True)
     args = [(tuple(p["colors"]), p["x"], p["y"]) for p in a["probes"]]
     assert len(set(args)) == len(args) and (("green", "red"), 4, 3) not in args
     for colors, x, y in args:
