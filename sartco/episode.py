@@ -46,6 +46,11 @@ INSTRUCTION_CHARACTERS = "Instruction Characters"
 OBJECT_NAMED = "Object Named"
 # the paper protocol (sartco.clem.paper): shares of the dialogue's turns, 0..1
 PAPER_SCORES = {"em": "Paper EM", "cb": "Paper CB", "es": "Paper ES"}
+LEAK_FREE_ES = "Paper ES Leak-free"  # Paper ES with the answer run alone (no gold function in front)
+# function probes (sartco.clem.probes): optimal_function and repetition episodes only
+FUNCTION_GENERALISATION = "Function Generalisation"  # share of the probes built exactly, 0..1
+PROBE_CATEGORIES = "Probe Categories"  # each probe's category in order, joined by CATEGORY_SEPARATOR
+PROBE_FUNCTION = "Probe Function"      # whose function was probed: "model", "given" or "none"
 
 
 def round_score(k: int) -> str:
@@ -59,6 +64,7 @@ ATTEMPTS_KEY = "sartco_attempts"      # every build of an episode, in order
 INSTRUCTION_KEY = "sartco_instruction"  # the describer's instruction: {"text", "error", "combo_name"}
 DIALOGUE_KEY = "sartco_dialogue"      # the describe dialogue's log
 PAPER_KEY = "sartco_paper"            # the paper protocol's reading: {"em", "cb", "es", "turns": [...]}
+PROBES_KEY = "sartco_probes"          # the function probes (sartco.clem.probes.run_probes)
 MARKDOWN_KEY = "markdown"             # clemcore renders the transcript's messages as Markdown
 
 

@@ -113,7 +113,7 @@ class CobotDescribe(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameMas
 
     def _end(self):
         """The last build is the episode's result (its board event is logged already)."""
-        end_build(self, self.dialogue.builds[-1], self.dialogue.builds)
+        end_build(self, self.dialogue.builds[-1], self.dialogue.builds, instance=self.episode)
 
     def _on_parse_error(self, error: ParseError):
         e, d = self.episode, self.dialogue

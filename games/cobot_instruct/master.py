@@ -85,7 +85,7 @@ class CobotInstruct(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameMas
         self.attempts.append(record)
         left = self.max_attempts - len(self.attempts)
         if record.es or left <= 0:
-            finish_build(self, record, self.attempts)
+            finish_build(self, record, self.attempts, instance=self.instance)
             return
         log_build(self, record, final=False, attempt=len(self.attempts))
         self.codes = []

@@ -149,20 +149,26 @@ def build_answers(instance: dict, answers: list[str]) -> BuildRecord:
     return build_for(instance, "\n".join(codes), turn_codes=codes)
 
 
-def finish_build(game_master, record: BuildRecord, attempts: list[BuildRecord] | None = None) -> None:
+def finish_build(game_master, record: BuildRecord, attempts: list[BuildRecord] | None = None, *,
+                 instance: dict | None = None) -> None:
     """The episode ends with `record`: log it as the final build, move the game state to the
     outcome of the attempts (every attempt in order, `record` the last; default: `record` alone)
     and hand ES, cell F1, category and puts to clemcore's step info (what a gym env's `info` and
     reward function see, sartco.clem.training)."""
     attempts = attempts or [record]
     log_build(game_master, record, final=False, attempt=len(attempts))
-    end_build(game_master, record, attempts)
+    end_build(game_master, record, attempts, instance=instance)
 
 
-def end_build(game_master, record: BuildRecord, attempts: list[BuildRecord]) -> None:
+def end_build(game_master, record: BuildRecord, attempts: list[BuildRecord], *, instance: dict | None = None) -> None:
     """The episode's result is `record`, the last of `attempts`, whose board event is logged:
-    record it for the scorer (BUILD_KEY), set the outcome and the step info."""
+    record it for the scorer (BUILD_KEY), probe its function (with the episode's `instance`,
+    sartco.clem.probes), set the outcome and the step info."""
+    from .probes import log_probes
+
     game_master.log_key(BUILD_KEY, record.to_json())
+    if instance is not None and record.error != ErrorCode.PARSE_ERROR:
+        log_probes(game_master, instance, record.builder_code)
     set_attempts_outcome(game_master.state, [a.category for a in attempts])
     game_master.info.update({key: getattr(record, name) for key, name in INFO_FIELDS.items()})
 

@@ -12,11 +12,13 @@ but the episode goes on). The episode succeeds when every turn's ES does.
 
 `PaperScorer` = BuildScorer's scores (ours) plus, for a paper episode, "Paper EM", "Paper CB",
 "Paper ES" (shares of the dialogue's turns, 0..1), the same per turn as round scores, and Main
-Score = 100 x Paper ES.
+Score = 100 x Paper ES, and "Paper ES Leak-free": Paper ES with each answer run without the gold
+object function in front (regular cells; elsewhere it equals Paper ES). Probed cells
+(sartco.clem.probes) also get the function probes of our build's code.
 """
 from __future__ import annotations
 
-from sartco.episode import PAPER_KEY, PAPER_SCORES, PaperExperiment, PaperProtocolEpisode
+from sartco.episode import LEAK_FREE_ES, PAPER_KEY, PAPER_SCORES, PaperExperiment, PaperProtocolEpisode
 from sartco.paper import PROTOCOL
 from sartco.paper.table3 import generation, load_table3
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, ErrorCode
@@ -24,6 +26,7 @@ from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, ErrorCode
 from .benchmark import json_fields
 from .building import build_answers, log_build
 from .outcomes import HarnessFault, set_share_outcome
+from .probes import log_probes
 from .scoring import BuildScorer
 from .transcript import code_block, text_block
 
@@ -90,8 +93,14 @@ def finish_paper(game_master, instance: dict, answers: list[str]) -> None:
         why = f" ({turn.category}: {turn.message})" if turn.category else ""
         game_master.log_event("GM", "GM", {"type": PAPER_EVENT, "turn": k, "scores": entry,
                                            "content": shown(f"paper protocol, turn {k + 1}: {verdict}{why}", reading)})
-    game_master.log_key(PAPER_KEY, {"em": score.em, "cb": score.cb, "es": score.es, "turns": turns})
-    log_build(game_master, build_answers(instance, answers))
+    alone = score if not instance["given_function"] else score_dialogue(answers, instance, alone=True)
+    check_turns(alone)
+    game_master.log_key(PAPER_KEY, {"em": score.em, "cb": score.cb, "es": score.es, "es_leak_free": alone.es,
+                                    "turns": turns})
+    record = build_answers(instance, answers)
+    log_build(game_master, record)
+    if record.error != ErrorCode.PARSE_ERROR:
+        log_probes(game_master, instance, record.builder_code)
     set_share_outcome(game_master.state, score.es)
 
 
@@ -114,6 +123,8 @@ class PaperScorer(BuildScorer):
             self.log_episode_score(name, float(paper[key]))
             for turn in paper["turns"]:
                 self.log_round_score(turn["turn"], name, int(turn[key]))
+        if "es_leak_free" in paper:
+            self.log_episode_score(LEAK_FREE_ES, float(paper["es_leak_free"]))
 
     def bench_score(self, interactions: dict, record) -> float:
         paper = interactions.get(PAPER_KEY)

@@ -20,7 +20,14 @@ Feedback experiments (experiment field `attempts` N > 1, sartco.clem.feedback) a
   Max Attempts       N
   Attempt Categories the category of each attempt in order, joined by "," (a string, like
                      Error Category: clem eval keeps it in raw.csv and uses only Main Score/Aborted)
-The other scores (and Main Score = 100 x final ES) are those of the last attempt. A last
+The other scores (and Main Score = 100 x final ES) are those of the last attempt.
+
+Probed episodes (optimal_function and repetition, sartco.clem.probes) add:
+  Function Generalisation  share of the K probes built exactly (NaN when aborted or not probed)
+  Probe Categories   each probe's category in order ("success", an ErrorCode value or
+                     "no_function"), joined by ","
+  Probe Function     whose function was probed: "model", "given" (a repetition answer calling the
+                     given function) or "none" A last
 attempt without code after attempts with code is lost, not aborted: ES/EM/CodeBLEU/cell scores 0.
 """
 from __future__ import annotations
@@ -29,12 +36,14 @@ from clemcore.clemgame import GameScorer, metrics
 
 from sartco.episode import (ATTEMPT_CATEGORIES, ATTEMPTS, ATTEMPTS_KEY, BUILD_KEY, BUILD_SCORES, CATEGORY_SEPARATOR,
                             CELL_F1, CELL_PRECISION, CELL_RECALL, CODEBLEU, ERROR_CATEGORY, ERROR_FAMILY, ES_AT_1,
-                            ES_AT_N, EXACT_MATCH, EXECUTION_SUCCESS, HARNESS_REASON, MAX_ATTEMPTS, PUTS)
+                            ES_AT_N, EXACT_MATCH, EXECUTION_SUCCESS, FUNCTION_GENERALISATION, HARNESS_REASON,
+                            MAX_ATTEMPTS, PROBE_CATEGORIES, PROBE_FUNCTION, PROBES_KEY, PUTS)
 from sartco.world import ErrorCode, category_family
 
 from .building import BuildRecord
 from .feedback import max_attempts
 from .harness import fault_reason, harness_scores
+from .probes import probed
 
 NAN = float("nan")
 
@@ -61,6 +70,7 @@ class BuildScorer(GameScorer):
         data = interactions.get(BUILD_KEY)
         record = BuildRecord.from_json(data) if data else None
         self.log_attempt_scores(interactions, record, aborted)
+        self.log_probe_scores(interactions, aborted)
         if aborted or record is None:
             for name in BUILD_SCORES:
                 self.log_episode_score(name, NAN)
@@ -88,6 +98,18 @@ class BuildScorer(GameScorer):
     def bench_score(self, interactions: dict, record: BuildRecord) -> float:
         """Main Score of a played episode: 100 x execution success of the build."""
         return 100.0 * record.es
+
+    def log_probe_scores(self, interactions: dict, aborted: bool) -> None:
+        """Function Generalisation, Probe Categories, Probe Function - probed episodes only
+        (sartco.clem.probes); FG is NaN when the episode was aborted or nothing was probed."""
+        if not probed(self.game_instance):
+            return
+        probes = None if aborted else interactions.get(PROBES_KEY)
+        share = probes["share"] if probes else None
+        self.log_episode_score(FUNCTION_GENERALISATION, NAN if share is None else float(share))
+        self.log_episode_score(PROBE_CATEGORIES, CATEGORY_SEPARATOR.join(
+            p["category"] for p in (probes or {}).get("probes", [])))
+        self.log_episode_score(PROBE_FUNCTION, (probes or {}).get("source") or "none")
 
     def log_attempt_scores(self, interactions: dict, final: BuildRecord | None, aborted: bool) -> None:
         """ES@1, ES@N, Attempts, Max Attempts, Attempt Categories - only in feedback experiments

@@ -19,7 +19,8 @@ Per turn, over the keys present in both gold and prediction (output; or function
   containing the text "while" fails (the authors' scorer refused it: category `forbidden`,
   message "While loop not supported"); a program that raises fails with its ErrorCode; a board
   other than the gold program's board fails with the mismatch category; a gold program that
-  raises (never on the published data) leaves no board to equal: the turn fails.
+  raises (never on the published data) leaves no board to equal: the turn fails. The leak-free
+  ES (`alone=True`, beyond the paper) runs the prediction without the gold function in front.
 A turn succeeds on a metric when every compared key does. An empty answer fails all three
 (category parse_error, "empty answer"; the authors' scorer crashed on it).
 Per dialogue: each metric is the share of successful turns; Table 3 is the mean over a cell's
@@ -103,9 +104,10 @@ def _gold_run(program: str):
     return execute(program, semantics=PAPER)
 
 
-def execution(prediction: str, gold: str, given_function: str = "") -> tuple[bool, str | None, str]:
-    """(es, category, message) of one executed key."""
-    program = es_program(prediction, given_function)
+def execution(prediction: str, gold: str, given_function: str = "", alone: bool = False) -> tuple[bool, str | None, str]:
+    """(es, category, message) of one executed key; `alone`: the prediction without the given
+    function in front (the leak-free ES), the gold program with it."""
+    program = es_program(prediction, "" if alone else given_function)
     if "while" in program:
         return False, str(ErrorCode.FORBIDDEN), WHILE_REFUSAL
     ex = execute(program, semantics=PAPER)
@@ -122,7 +124,7 @@ def execution(prediction: str, gold: str, given_function: str = "") -> tuple[boo
     return False, str(ErrorCode(cmp.category)), "the program built another board than the gold program"
 
 
-def score_turn(prediction: dict, gold: dict, variant: str, given_function: str = "") -> TurnScore:
+def score_turn(prediction: dict, gold: dict, variant: str, given_function: str = "", alone: bool = False) -> TurnScore:
     """One turn's EM, CB pass and ES (see the module doc). prediction: read_answer's dict."""
     if variant not in VARIANTS:
         raise ValueError(f"unknown variant {variant!r}; expected one of {', '.join(VARIANTS)}")
@@ -139,17 +141,18 @@ def score_turn(prediction: dict, gold: dict, variant: str, given_function: str =
         return TurnScore(em, cb, False, str(ErrorCode.PARSE_ERROR), "no code to execute")
     es, category, message = True, None, ""
     for key in executed:
-        ok, category, message = execution(prediction[key], gold[key], given_function)
+        ok, category, message = execution(prediction[key], gold[key], given_function, alone)
         if not ok:
             es = False
             break
     return TurnScore(em, cb, es, category if not es else None, message if not es else "")
 
 
-def score_dialogue(responses: list[str], episode) -> DialogueScore:
+def score_dialogue(responses: list[str], episode, alone: bool = False) -> DialogueScore:
     """Score the raw answers of one dialogue (one per turn). episode: a PaperEpisode or its
     to_json() dict. Missing answers at the end count as empty answers; more answers than turns
-    or a non-string answer is a ValueError."""
+    or a non-string answer is a ValueError. `alone`: every answer runs without the given function
+    in front (the leak-free ES; the gold programs keep it)."""
     ep = episode if isinstance(episode, dict) else episode.to_json()
     golds, variant, given = ep["gold"], ep["variant"], ep.get("given_function", "")
     if not isinstance(responses, list) or not all(isinstance(r, str) for r in responses):
@@ -159,7 +162,7 @@ def score_dialogue(responses: list[str], episode) -> DialogueScore:
     turns = []
     for i, gold in enumerate(golds):
         answer = responses[i] if i < len(responses) else ""
-        turns.append(EMPTY if not answer.strip() else score_turn(read_answer(answer, variant), gold, variant, given))
+        turns.append(EMPTY if not answer.strip() else score_turn(read_answer(answer, variant), gold, variant, given, alone))
     n = len(turns)
     return DialogueScore(em=sum(t.em for t in turns) / n, cb=sum(t.cb for t in turns) / n,
                          es=sum(t.es for t in turns) / n, turns=turns)

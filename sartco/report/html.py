@@ -1,6 +1,6 @@
 """report.html of `sartco report`: one self-contained page (inline SVG and CSS, no script, no network).
 
-Per game: the Table 3 cells x models with `x [lo, hi]` intervals (EM / CB / ES), a stacked bar of the
+Per game: the Table 3 cells x models with `x [lo, hi]` intervals (EM / CB / ES / FG), a stacked bar of the
 error categories per model and experiment, the ES-by-round plot of the dialogue modes, a heat map of
 the grid cells that differ between the built and the target board in the failed episodes (the
 build record `sartco_build` of interactions.json: its `cells` and `target`), and one example
@@ -71,7 +71,8 @@ def failed_cells(results: Path, episodes: list[dict]) -> tuple[Counter, int, int
 
 
 def cells_table(rows: list[dict]) -> str:
-    """Table 3 cells (board, object, task, source) x models: EM / CB / ES `x [lo, hi]`; "not run" when unplayed."""
+    """Table 3 cells (board, object, task, source) x models: EM / CB / ES (and FG, function
+    generalisation, in probed cells) `x [lo, hi]`; "not run" when unplayed."""
     keys = ["board_type", "object_type", "task", "source"]
     models = sorted({r["model"] for r in rows})
     cells: dict[tuple, dict] = {}
@@ -90,7 +91,8 @@ def cells_table(rows: list[dict]) -> str:
             mark = INCOMPLETE_MARK if short else ""
             line += (f"<td{' class=incomplete' if short else ''}>" + "<br>".join(
                 f"{name} {r[x]:.1f} [{r[x + '_lo']:.1f}, {r[x + '_hi']:.1f}]{mark}"
-                for name, x in (("EM", "em"), ("CB", "cb"), ("ES", "es"))) + f"<br><small>n = {r['episodes']}</small></td>")
+                for name, x in (("EM", "em"), ("CB", "cb"), ("ES", "es"), ("FG", "fg")) if r[x] == r[x])
+                + f"<br><small>n = {r['episodes']}</small></td>")
         out.append(f"<tr>{line}</tr>")
     return "\n".join(out) + "</table>\n"
 
@@ -141,7 +143,8 @@ def game_section(game: str, results: Path, out: Path, episodes: list[dict], tabl
     own = [e for e in episodes if e["game"] == game]
     parts = [f"<h2 id='{esc(game)}'>{esc(game)}</h2>"]
     if table_rows:
-        parts.append("<h3>Cells x models: EM / CB / ES (%) with 95 % bootstrap intervals</h3>" + cells_table(table_rows))
+        parts.append("<h3>Cells x models: EM / CB / ES / FG (function generalisation) (%) with 95 % bootstrap "
+                     "intervals</h3>" + cells_table(table_rows))
     errs = [r for r in error_rows if r["game"] == game]
     if errs:
         cats = [c for c in colours if any(r.get(c) for r in errs)]

@@ -17,6 +17,7 @@ SEED = 20220601          # fixed: the same results folder gives the same interva
 RESAMPLES = 10_000
 LEVEL = 0.95
 RATES = ("played", "em", "cb", "es", "f1")   # the rates of a report row, by their column names
+PROBED_RATES = ("fg",)   # rates of probed episodes only (Function Generalisation): NaN in a row without any
 
 
 def values(group: list[dict], metric: str) -> np.ndarray:
@@ -48,19 +49,22 @@ def interval(x, *, seed: int = SEED, resamples: int = RESAMPLES) -> tuple[float,
 def bounds(group: list[dict]) -> dict:
     """`<rate>_lo` and `<rate>_hi` (percent, 2 places) of every rate of a group of episodes."""
     out = {}
-    for metric in RATES:
-        lo, hi = interval(values(group, metric))
+    probed = any(e.get("probed") for e in group)
+    for metric in RATES + PROBED_RATES:
+        lo, hi = interval(values(group, metric) if probed or metric in RATES else [])
         out[f"{metric}_lo"], out[f"{metric}_hi"] = round(100 * lo, 2), round(100 * hi, 2)
     return out
 
 
 def columns(header: list[str]) -> list[str]:
     """The CSV header with `_lo`/`_hi` after every rate column."""
-    return [c for h in header for c in ((h, f"{h}_lo", f"{h}_hi") if h in RATES else (h,))]
+    return [c for h in header for c in ((h, f"{h}_lo", f"{h}_hi") if h in RATES + PROBED_RATES else (h,))]
 
 
 def shown(row: dict, metric: str) -> str:
-    """`x [lo, hi]` for Markdown."""
+    """`x [lo, hi]` for Markdown ("n/a": a rate the row's episodes do not have, as FG of unprobed cells)."""
+    if row[metric] != row[metric]:
+        return "n/a"
     return f"{row[metric]:.2f} [{row[f'{metric}_lo']:.2f}, {row[f'{metric}_hi']:.2f}]"
 
 

@@ -6,7 +6,8 @@ cobot_instruct_paper) from the rows of sartco.report.collect, and writes
   paper_table3.md / paper_table3.csv
 one line per Table 3 cell and instruction source, in the paper's order: the paper's EM, CB, ES for
 CodeLlama-34B, GPT-4 and Claude-3, then the same for each model of the results (the mean over the
-cell's episodes of "Paper EM", "Paper CB", "Paper ES", shares 0..1, as the paper prints them).
+cell's episodes of "Paper EM", "Paper CB", "Paper ES", shares 0..1, as the paper prints them), and
+beyond the paper "Paper ES Leak-free" and "Function Generalisation" (no paper figure).
 The paper's model-written rows belong to the CodeLlama-written files (table3.json's note); the
 GPT-4- and Claude-written files have no figure in the paper. Cells in the results that Table 3
 does not have come last. A model run with other generation settings than the paper's
@@ -19,13 +20,18 @@ from __future__ import annotations
 from pathlib import Path
 
 from sartco.dataset import SOURCES as SOURCE_ORDER
-from sartco.episode import PAPER_SCORES
+from sartco.episode import FUNCTION_GENERALISATION, LEAK_FREE_ES, PAPER_SCORES
 from sartco.paper import PROTOCOL
 from sartco.paper.table3 import CELL_KEYS, TABLE3, cell_key as _key, cell_source as _source, generation, load_table3
 
 from .files import write_csv
 
 FLAG = "(!)"
+# beyond the paper: the leak-free ES (the answer without the gold function in front) and the function
+# probes' share (probed cells only), as shares 0..1; the paper has no figure for them
+OURS = {"es_leak_free": LEAK_FREE_ES, "fg": FUNCTION_GENERALISATION}
+METRICS = {**PAPER_SCORES, **OURS}
+NAMES = ("EM", "CB", "ES", "ES leak-free", "FG")
 
 
 def paper_episodes(episodes: list[dict]) -> list[dict]:
@@ -41,6 +47,8 @@ def paper_episodes(episodes: list[dict]) -> list[dict]:
                     "object": exp["object_type"], "task": exp["task"], "variant": exp.get("variant", ""),
                     "source": exp.get("source", ""),
                     **{k: float(scores.get(name) or 0.0) for k, name in PAPER_SCORES.items()},
+                    "es_leak_free": float(scores.get(LEAK_FREE_ES) or 0.0),
+                    "fg": float(scores.get(FUNCTION_GENERALISATION) or 0.0) if FUNCTION_GENERALISATION in scores else None,
                     "gen_args": [dict(m.get("gen_args") or {}) for m in models.values()]})
     return out
 
@@ -87,12 +95,19 @@ def table(table3: dict, rows: list[dict]) -> tuple[list[str], list[dict]]:
         for m in paper_models:
             scores = (cell or {}).get("scores", {}).get(m)
             out.append({**base, "model": f"paper {table3['models'][m]}", "paper": 1, "episodes": "",
-                        **({k: v for k, v in zip(PAPER_SCORES, scores)} if scores else dict.fromkeys(PAPER_SCORES))})
+                        **({k: v for k, v in zip(PAPER_SCORES, scores)} if scores else dict.fromkeys(PAPER_SCORES)),
+                        **dict.fromkeys(OURS)})
         for m in models:
             group = means.get(key, {}).get(m, [])
             out.append({**base, "model": m, "paper": 0, "episodes": len(group),
-                        **{k: (sum(r[k] for r in group) / len(group) if group else None) for k in PAPER_SCORES}})
-    return [*CELL_KEYS, "source", "model", "paper", "episodes", *PAPER_SCORES], out
+                        **{k: _mean([r[k] for r in group]) for k in METRICS}})
+    return [*CELL_KEYS, "source", "model", "paper", "episodes", *METRICS], out
+
+
+def _mean(values: list) -> float | None:
+    """The mean over a group (None: no episode, or a rate none of them has, as FG of unprobed cells)."""
+    values = [v for v in values if v is not None]
+    return sum(values) / len(values) if values else None
 
 
 def markdown(header_rows: tuple[list[str], list[dict]], notes: dict[str, str], wanted: dict) -> str:
@@ -107,7 +122,7 @@ def markdown(header_rows: tuple[list[str], list[dict]], notes: dict[str, str], w
         lines.setdefault(tuple(r[k] for k in (*CELL_KEYS, "source")), {})[r["model"]] = r
     head = ["instructions", "board", "object", "task", "source"] + [label for _, label in columns]
     tables = []
-    for metric, name in zip(PAPER_SCORES, ("EM", "CB", "ES")):  # one narrow table per metric
+    for metric, name in zip(METRICS, NAMES):  # one narrow table per metric
         out = [f"### {name}\n", "| " + " | ".join(head) + " |", "|" + "|".join("---" for _ in head) + "|"]
         for key, by_model in lines.items():
             cell = [key[0], key[1], key[2], f"{key[3]} ({key[4]})", key[5]]
@@ -119,7 +134,10 @@ def markdown(header_rows: tuple[list[str], list[dict]], notes: dict[str, str], w
             "episodes, as the paper measured them; the paper's figures are the first columns (\"paper ...\"), "
             "the models of these results follow. The paper's model-written rows used the CodeLlama-written "
             "instructions; GPT-4- and Claude-written instructions have no figure in the paper (\"no figure\"); "
-            "\"not run\": a cell these results do not hold.\n\n")
+            "\"not run\": a cell these results do not hold. Beyond the paper: \"ES leak-free\" runs each answer "
+            "without the gold object function the paper puts in front of it (regular cells; elsewhere it "
+            "equals ES), \"FG\" is the share of function probes built exactly (sartco.clem.probes; \"n/a\": a "
+            "cell without probes); the paper's ES stays the paper's.\n\n")
     text += "\n".join(tables)
     if notes:
         text += (f"\n{FLAG} not comparable with the paper, which generated with temperature "
@@ -132,7 +150,9 @@ def markdown(header_rows: tuple[list[str], list[dict]], notes: dict[str, str], w
 def _shown(row: dict | None, metric: str) -> str:
     if row is None or (not row["paper"] and not row["episodes"]):
         return "not run"
-    return "no figure" if row[metric] is None else f"{row[metric]:.2f}"
+    if row[metric] is None:
+        return "no figure" if row["paper"] else "n/a"
+    return f"{row[metric]:.2f}"
 
 
 def write(episodes: list[dict], out: Path, project_markdown: str, table3_path: Path = TABLE3):

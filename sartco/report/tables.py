@@ -2,7 +2,7 @@
 
 Reads every episode's scores.json (written by `clem score`) and its experiment.json, and writes,
 as Markdown and CSV:
-  table3.md / table3.csv      board type, object type, task, instruction source, model: EM, CB, ES
+  table3.md / table3.csv      board type, object type, task, instruction source, model: EM, CB, ES, FG
                               (the paper's Table 3; test-split experiments without ablation; the
                               cobot_instruct_published rows under cobot_instruct, TABLE3_GAME)
   paper_table3.md / .csv      Table 3 in the paper protocol beside the paper's figures, then table3.md
@@ -32,7 +32,7 @@ from pathlib import Path
 from sartco.errors import UserError
 from sartco.dataset import SOURCES as SOURCE_ORDER, TASKS as TASK_ORDER
 from sartco.episode import (ATTEMPTS, CELL_F1, CODEBLEU, ERROR_CATEGORY, ES_AT_1, EXACT_MATCH, EXECUTION_SUCCESS,
-                            HARNESS_REASON, MAX_ATTEMPTS)
+                            FUNCTION_GENERALISATION, HARNESS_REASON, MAX_ATTEMPTS)
 from sartco.world import ErrorCode
 
 from . import completeness, contamination, dialogue_table, harness_table, html, intervals, paper_table, passk, robustness
@@ -87,6 +87,7 @@ def collect(results: Path, games: list[str] | None = None) -> list[dict]:
             "aborted": int(scores.get("Aborted", 0) or 0),
             "em": number(scores.get(EXACT_MATCH)), "cb": number(scores.get(CODEBLEU)),
             "es": number(scores.get(EXECUTION_SUCCESS)), "f1": number(scores.get(CELL_F1)),
+            "fg": number(scores.get(FUNCTION_GENERALISATION)), "probed": FUNCTION_GENERALISATION in scores,
             "category": scores.get(ERROR_CATEGORY) or (str(ErrorCode.PARSE_ERROR) if scores.get("Aborted") else "unknown"),
             "harness_reason": scores.get(HARNESS_REASON) or "",
             "max_attempts": attempts, "feedback_of": exp.get("feedback_of", ""), "mode": exp.get("mode") or "oneshot",
@@ -103,6 +104,7 @@ def _summarise(group: list[dict]) -> dict:
     return {"episodes": len(group), "played": percent([1.0 - e["aborted"] for e in group]),
             "em": percent([e["em"] for e in group]), "cb": percent([e["cb"] for e in group]),
             "es": percent([e["es"] for e in group]), "f1": percent([e["f1"] for e in group]),
+            "fg": percent([e["fg"] for e in group]) if any(e["probed"] for e in group) else float("nan"),
             **intervals.bounds(group), **completeness.cell(group)}  # 95 % bootstrap intervals: <rate>_lo, <rate>_hi
 
 
@@ -131,7 +133,7 @@ def table3(episodes: list[dict]) -> tuple[list[str], list[dict]]:
         rows.append({"game": game, "board_type": board, "object_type": obj, "task": task, "source": source,
                      "split": split, "model": model, **_summarise(groups[key])})
     return intervals.columns(["game", "board_type", "object_type", "task", "source", "split", "model", "episodes",
-                              "episodes_expected", "episodes_scored", "played", "em", "cb", "es", "f1"]), rows
+                              "episodes_expected", "episodes_scored", "played", "em", "cb", "es", "fg", "f1"]), rows
 
 
 def ablations(episodes: list[dict]) -> tuple[list[str], list[dict]]:
@@ -152,7 +154,7 @@ def ablations(episodes: list[dict]) -> tuple[list[str], list[dict]]:
                      "ablation": kind, "value": value, "model": model, **_summarise(groups[key])})
     return intervals.columns(["game", "board_type", "object_type", "task", "source", "ablation", "value", "model",
                               "episodes", "episodes_expected", "episodes_scored", "played", "em", "cb", "es",
-                              "f1"]), rows
+                              "fg", "f1"]), rows
 
 
 def errors(episodes: list[dict]) -> tuple[list[str], list[dict]]:
@@ -202,7 +204,7 @@ def table3_markdown(rows: list[dict], title: str, keys: list[str]) -> str:
         cells.setdefault(tuple(r[k] for k in keys), {})[r["model"]] = r
     header = [k.replace("_", " ") for k in keys] + models
     tables = []
-    for x, name in (("em", "EM"), ("cb", "CB"), ("es", "ES")):
+    for x, name in (("em", "EM"), ("cb", "CB"), ("es", "ES"), ("fg", "FG")):
         body = [[TASK_NAMES.get(v, v) if k == "task" else v for k, v in zip(keys, key)]
                 + [completeness.mark(intervals.shown(by_model[m], x), by_model[m]) if m in by_model else "not run"
                    for m in models] for key, by_model in cells.items()]
@@ -211,7 +213,8 @@ def table3_markdown(rows: list[dict], title: str, keys: list[str]) -> str:
     note = "; ".join(f"{m}: {sum(r['episodes'] for r in rs)} episodes, " + intervals.shown_counts(
         round(sum(r["played"] * r["episodes"] / 100 for r in rs)), sum(r["episodes"] for r in rs)) + "% played"
         for m, rs in played.items())
-    return (f"## {title}\n\nEM = exact match, CB = CodeBLEU, ES = execution success (%), each `x [lo, hi]` "
+    return (f"## {title}\n\nEM = exact match, CB = CodeBLEU, ES = execution success (%), FG = function "
+            f"generalisation (% of function probes built exactly; n/a: a cell without probes), each `x [lo, hi]` "
             f"with its 95 % bootstrap interval; \"not run\": a cell the model did not play. {note}.\n\n"
             + "\n".join(tables))
 

@@ -136,12 +136,16 @@ def test_report_puts_the_run_beside_the_papers_figures(paper_episodes, play_epis
     table3 = json.loads((DEFAULT_DATA / "paper-protocol" / "table3.json").read_text())
     first = [line for line in md.splitlines() if "first_order (multi_turn)" in line]  # EM, CB, ES tables
     paper = table3["cells"][0]["scores"]
-    assert len(first) == 3 and all(line.startswith("| template | simple | simple | first_order (multi_turn) | template | ")
+    # EM, CB, ES, then ours beyond the paper: ES leak-free and FG (no paper figure; no probes here)
+    assert len(first) == 5 and all(line.startswith("| template | simple | simple | first_order (multi_turn) | template | ")
                                    for line in first)
-    for i, line in enumerate(first):
+    for i, line in enumerate(first[:3]):
         assert line.endswith(" | " + " | ".join(f"{paper[m][i]:.2f}" for m in ("codellama", "gpt4", "claude")) + " | 1.00 |")
+    assert first[3].endswith("| no figure | no figure | no figure | 1.00 |")
+    assert first[4].endswith("| no figure | no figure | no figure | n/a |")
     human = [line for line in md.splitlines() if "repetition (regular_hai)" in line and " regular | simple |" in line]
-    assert [line[-8:] for line in human] == ["| 0.00 |", "| 1.00 |", "| 1.00 |"]  # mock: EM 0, CB 1, ES 1
+    # mock: EM 0, CB 1, ES 1; its loop alone names a function it never defines (leak-free ES 0); FG 1
+    assert [line[-8:] for line in human] == ["| 0.00 |", "| 1.00 |", "| 1.00 |", "| 0.00 |", "| 1.00 |"]
     assert "(!)" not in md
     assert "# SARTCo results (paper Table 3 layout)" in md  # the project-protocol table follows
 
@@ -182,3 +186,36 @@ def test_the_generator_makes_one_experiment_per_cell_with_the_papers_settings():
         inst = exp["game_instances"][0]
         assert inst["protocol"] == "paper" and inst["messages"] and len(inst["mock_answers"]) == len(inst["gold"])
         assert inst["target"] and inst["task"] == cell["task"]
+
+
+def test_leak_free_es_runs_the_answer_without_the_gold_function(paper_episodes, play_episodes):
+    ep = paper_episodes["regular"]
+    gold = ep["mock_answers"][0]
+    loop = gold.split("\n", 1)[1]  # the right usage loop, after the "Output" label
+    name = ep["given_function"].split("(")[0].removeprefix("def ")
+    misnamed = f"Output\ndef {name}_object(board, colors, x, y):\n    put(board, 'washer', 'red', 0, 0)\n" + loop
+    wrong = f"Output\ndef {name}(board, colors, x, y):\n    put(board, 'washer', 'red', 0, 0)\n" + loop
+    right = f"Output\n{ep['given_function']}\n" + loop
+    scripts = [[gold], [misnamed], [wrong], [right]]
+    results = play_episodes(instances([ep] * 4, scripts), experiment(ep, "paper_leak"), game=GAME)
+    gold_s, misnamed_s, wrong_s, right_s = (scores_of(r) for r in results)
+    # the usage is right, the function absent or wrong under another name: the gold function in
+    # front makes the paper's ES pass; the answer alone calls a name it never defines
+    for s in (gold_s, misnamed_s):
+        assert (s["Paper ES"], s["Paper ES Leak-free"], s["Main Score"]) == (1.0, 0.0, 100.0)
+    # a wrong function under the called name shadows the gold one: both fail; a right one: both pass
+    assert (wrong_s["Paper ES"], wrong_s["Paper ES Leak-free"]) == (0.0, 0.0)
+    assert (right_s["Paper ES"], right_s["Paper ES Leak-free"]) == (1.0, 1.0)
+    # the probes call the function the loop calls: the given one unless the answer redefines it
+    assert (gold_s["Function Generalisation"], gold_s["Probe Function"]) == (1.0, "given")
+    assert (wrong_s["Function Generalisation"], wrong_s["Probe Function"]) == (0.0, "model")
+    assert (right_s["Function Generalisation"], right_s["Probe Function"]) == (1.0, "model")
+
+
+def test_paper_function_cells_are_probed_and_sequence_cells_are_not(paper_episodes, play_episodes):
+    eps = [paper_episodes["single_turn"], paper_episodes["single_turn_sc"]]
+    results = play_episodes(instances(eps), experiment(eps[0], "paper_probes"), game=GAME)
+    optimal, sequence = (scores_of(r) for r in results)
+    assert optimal["Function Generalisation"] == 1.0 and optimal["Probe Categories"] == ",".join(["success"] * 8)
+    assert optimal["Paper ES Leak-free"] == optimal["Paper ES"] == 1.0  # no function given in front
+    assert "Function Generalisation" not in sequence and "sartco_probes" not in results[1]["interactions"]

@@ -1,0 +1,114 @@
+"""Function probes (sartco.clem.probes): the model's function, found by the documented rule, run at
+K held-out arguments in the sandbox and compared with the gold function's boards."""
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from sartco.clem.probes import DEFAULT_PROBES, NO_FUNCTION, probed, probed_function, run_probes, without_usage
+
+INSTANCES = Path(__file__).resolve().parents[2] / "games" / "cobot_instruct" / "in" / "instances.json"
+
+
+def first_episode(task: str, object_type: str = "simple") -> dict:
+    for e in json.loads(INSTANCES.read_text())["experiments"]:
+        ep = e["game_instances"][0]
+        if ep["task"] == task and ep["object_type"] == object_type:
+            return ep
+    raise AssertionError(task)
+
+
+@pytest.fixture(scope="module")
+def optimal():
+    ep = first_episode("optimal_function")
+    assert ep["combo_name"] == "bn" and ep["target"] == {  # the answers below are written for it
+        "4:3": [["bridge-v", "green"], ["nut", "red"]], "5:3": [["bridge-v", "green"]]}
+    return ep
+
+
+HARD_CODED = """def bn(board, colors, x, y):
+    put(board, 'bridge-v', 'green', 4, 3)
+    put(board, 'nut', 'red', 4, 3)
+bn(board, ('green', 'red'), 4, 3)"""
+GENERAL = """def bn(board, colors, x, y):
+    put(board, 'bridge-v', colors[0], x, y)
+    put(board, 'nut', colors[1], x, y)
+bn(board, ('green', 'red'), 4, 3)"""
+
+
+def test_a_hard_coding_function_passes_es_and_fails_every_probe(optimal):
+    from sartco.clem.building import build_for
+    assert build_for(optimal, HARD_CODED).es == 1
+    result = run_probes(optimal, HARD_CODED)
+    assert (result["function"], result["source"], result["share"]) == ("bn", "model", 0.0)
+    assert len(result["probes"]) == DEFAULT_PROBES
+    assert {p["category"] for p in result["probes"]} <= {"mismatch_location", "mismatch_color"}
+
+
+def test_a_general_function_passes_es_and_every_probe(optimal):
+    from sartco.clem.building import build_for
+    assert build_for(optimal, GENERAL).es == 1
+    result = run_probes(optimal, GENERAL)
+    assert result["share"] == 1.0 and {p["category"] for p in result["probes"]} == {"success"}
+
+
+def test_probe_arguments_are_held_out_valid_and_byte_identical_across_runs(optimal):
+    a, b = run_probes(optimal, GENERAL), run_probes(optimal, GENERAL)
+    assert json.dumps(a, sort_keys=True) == json.dumps(b, sort_keys=True)
+    # another interpreter, another hash seed, no sandbox cache shared: the same bytes
+    script = ("import json, sys; from sartco.clem.probes import run_probes; "
+              "ep, code = json.load(sys.stdin); print(json.dumps(run_probes(ep, code), sort_keys=True))")
+    other = subprocess.run([sys.executable, "-c", script], input=json.dumps([optimal, GENERAL]), text=True,
+                           capture_output=True, env={**os.environ, "PYTHONHASHSEED": "123"}, check=True, timeout=300)
+    assert other.stdout.strip() == json.dumps(a, sort_keys=True)
+    args = [(tuple(p["colors"]), p["x"], p["y"]) for p in a["probes"]]
+    assert len(set(args)) == len(args) and (("green", "red"), 4, 3) not in args
+    for colors, x, y in args:
+        assert len(colors) == 2 and colors[0] != colors[1]  # the nut lies on the bridge: two colours
+        assert 0 <= x < 7 and 0 <= y < 8  # a vertical bridge needs the row below
+
+
+def test_the_wrong_colour_order_and_a_crash_at_other_arguments_are_categorised(optimal):
+    swapped = GENERAL.replace("colors[0], x, y)\n", "colors[1], x, y)\n", 1).replace(
+        "'nut', colors[1]", "'nut', colors[0]").replace("('green', 'red')", "('red', 'green')")
+    assert {p["category"] for p in run_probes(optimal, swapped)["probes"]} == {"mismatch_color"}
+    crashing = GENERAL.replace("    put(board, 'bridge-v'", "    assert x == 4\n    put(board, 'bridge-v'")
+    result = run_probes(optimal, crashing)
+    assert result["share"] < 1.0
+    assert {p["category"] for p in result["probes"] if p["x"] != 4} == {"runtime_error"}
+
+
+def test_an_answer_without_a_function_gets_no_function_probes(optimal):
+    result = run_probes(optimal, "put(board, 'bridge-v', 'green', 4, 3)\nput(board, 'nut', 'red', 4, 3)")
+    assert result["function"] is None and result["share"] == 0.0
+    assert {p["category"] for p in result["probes"]} == {NO_FUNCTION}
+
+
+def test_the_rule_for_finding_the_function():
+    given = "def bn(board, colors, x, y):\n    put(board, 'nut', colors[0], x, y)\n"
+    helper = "def helper(a):\n    return a\ndef obj(board, colors, x, y):\n    helper(1)\n"
+    assert probed_function(helper + "z = helper(2)\nobj(board, ['red'], 1, 1)") == "obj"  # board first
+    assert probed_function("for r in range(2):\n    bn(board=board, colors=['red'], x=r, y=0)", given) == "bn"
+    assert probed_function("bn(board, ['red'], 1, 1)", "") is None  # not defined in the program
+    assert probed_function("def f(board):\n    bn(board, ['red'], 1, 1)", given) is None  # inside a def
+    assert without_usage(helper + "obj(board, ['red'], 1, 1)\nx = 3", "obj") == helper + "x = 3"
+
+
+def test_repetition_probes_the_function_the_loop_calls(optimal):
+    rep = first_episode("repetition")
+    gold = run_probes(rep, rep["gold_code"])
+    assert (gold["function"], gold["source"], gold["share"]) == ("bn", "given", 1.0)
+    own = "def bn(board, colors, x, y):\n    put(board, 'bridge-v', 'red', 0, 0)\n" + rep["gold_code"]
+    result = run_probes(rep, own)
+    assert (result["source"], result["share"]) == ("model", 0.0)  # the answer's def wins, as when it runs
+
+
+def test_which_episodes_are_probed(optimal):
+    assert probed(optimal) and probed(first_episode("repetition", "complex"))
+    assert not probed(first_episode("sequence_function")) and not probed(first_episode("first_order"))
+    assert not probed({**optimal, "probes": 0})
