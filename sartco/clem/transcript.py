@@ -34,9 +34,9 @@ PROSE_STYLE = "white-space: pre-wrap; margin: 0"  # the page's own (proportional
 TEXT_STYLE = "white-space: pre-wrap; overflow-wrap: anywhere; margin: 0; font-family: monospace"  # grids line up
 CODE_STYLE = ("white-space: pre-wrap; overflow-wrap: anywhere; margin: 4px 0; padding: 6px; background: #f6f8fa; "
               "border: 1px solid #d0d7de; border-radius: 4px; font-family: monospace")
-# A line of grid or code inside plain text: a text grid's row ("[", "]", "⬜"), an indented line, a
-# call or an assignment, a fence ("put(board, ...)", "x = 3"), a Python keyword line or a comment.
-LITERAL = re.compile(r"^(\s|[\[\]#`]|.*\u2b1c|[A-Za-z_][\w.]*\(|[A-Za-z_]\w*\s*[-+*/]?=[^=]"
+# A line of grid or code inside plain text: a text grid's row ("[", "]"), an indented line, a
+# call (lowercase, as Python's) or an assignment, a fence ("put(board, ...)", "x = 3"), a Python keyword line or a comment.
+LITERAL = re.compile(r"^(\s|[\[\]#`]|[a-z_][\w.]*\(|[A-Za-z_]\w*\s*[-+*/]?=[^=]"
                      r"|(def|for|while|if|elif|else|return|import|from|with|try|except)\b)")
 
 
