@@ -150,7 +150,7 @@ def game_section(game: str, results: Path, out: Path, episodes: list[dict], tabl
         bars = [(f"{r['model']} / {r['experiment']}", {c: r.get(c, 0) for c in cats}) for r in errs]
         parts.append("<h3>Error categories per model and experiment (share of episodes)</h3>"
                      + charts.stacked_bars(bars, cats, colours))
-    dialogue = dialogue_table.dialogue_episodes(own)
+    dialogue = [d for d in dialogue_table.dialogue_episodes(own) if d["mode"] != "oneshot"]  # one round: no curve
     if dialogue:
         parts.append("<h3>ES by round of the dialogue modes</h3>" + charts.line_plot(dialogue_table.curves(dialogue)))
     counts, rows, cols, counted = failed_cells(results, [e for e in own if e["category"] != "harness_error"])

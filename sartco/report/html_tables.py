@@ -28,7 +28,7 @@ def grid(head: list[str], lines: dict[tuple, dict[str, str]], models: list[str],
 
 def dialogue(episodes: list[dict]) -> dict[str, str]:
     """game -> its dialogue experiments x models: ES@1, ES@N, cell F1 and ES after each round (%)."""
-    eps = dialogue_table.dialogue_episodes(episodes)
+    eps = [e for e in dialogue_table.dialogue_episodes(episodes) if e["mode"] != "oneshot"]  # the cells table has it
     groups: dict[tuple, list] = defaultdict(list)
     for e in eps:
         groups[(e["model"], e["game"], e["experiment"])].append(e)
