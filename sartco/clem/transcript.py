@@ -30,19 +30,37 @@ from sartco.text import escape, exact_json
 RAW_KEY = "text"           # a message action's text (its `content` is the display form)
 EXACT_KEY = "exact_json"   # an answer's exact text as ASCII JSON, when escaping changed it
 FENCE = re.compile(r"^[ \t]*```[^\n]*\n(.*?)^[ \t]*```[ \t]*$", re.M | re.S)  # a closed fenced block
-TEXT_STYLE = "white-space: pre-wrap; margin: 0; font-family: monospace"  # grids and readings line up
-CODE_STYLE = ("white-space: pre; overflow-x: auto; margin: 4px 0; padding: 6px; background: #f6f8fa; "
+PROSE_STYLE = "white-space: pre-wrap; margin: 0"  # the page's own (proportional) font
+TEXT_STYLE = "white-space: pre-wrap; overflow-wrap: anywhere; margin: 0; font-family: monospace"  # grids line up
+CODE_STYLE = ("white-space: pre-wrap; overflow-wrap: anywhere; margin: 4px 0; padding: 6px; background: #f6f8fa; "
               "border: 1px solid #d0d7de; border-radius: 4px; font-family: monospace")
+# A line of grid or code inside plain text: a text grid's row ("[", "]"), an indented line, a
+# call (lowercase, as Python's) or an assignment, a fence ("put(board, ...)", "x = 3"), a Python keyword line or a comment.
+LITERAL = re.compile(r"^(\s|[\[\]#`]|[a-z_][\w.]*\(|[A-Za-z_]\w*\s*[-+*/]?=[^=]"
+                     r"|(def|for|while|if|elif|else|return|import|from|with|try|except)\b)")
 
 
 def text_block(text: str) -> str:
-    """Plain text as an HTML block that keeps its line breaks and indentation, in monospace (the
-    describer's grid view and the paper protocol's readings line up)."""
-    return f'<div class="sartco-text" style="{TEXT_STYLE}">{html.escape(text, quote=False)}</div>'
+    """Plain text as HTML blocks that keep its line breaks and indentation: runs of grid or code
+    lines (LITERAL; the describer's grid view, an unfenced answer's code) in monospace so that they
+    line up, the prose between them in the page's proportional font."""
+    runs: list[tuple[bool, list[str]]] = []
+    for line in text.split("\n"):
+        literal = bool(LITERAL.match(line)) if line.strip() else (runs[-1][0] if runs else False)
+        if runs and runs[-1][0] == literal:
+            runs[-1][1].append(line)
+        else:
+            runs.append((literal, [line]))
+    return "\n".join(_run(literal, "\n".join(lines)) for literal, lines in runs) or _run(False, "")
+
+
+def _run(literal: bool, text: str) -> str:
+    kind, style = ("sartco-text", TEXT_STYLE) if literal else ("sartco-prose", PROSE_STYLE)
+    return f'<div class="{kind}" style="{style}">{html.escape(text, quote=False)}</div>'
 
 
 def code_block(code: str) -> str:
-    """Code as a code block (monospace, indentation kept; long lines scroll rather than wrap)."""
+    """Code as a code block (monospace, indentation kept; long lines wrap rather than scroll)."""
     return (f'<pre class="sartco-code" style="{CODE_STYLE}"><code class="language-python">'
             f"{html.escape(code.rstrip(), quote=False)}</code></pre>")
 

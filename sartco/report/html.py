@@ -30,7 +30,7 @@ STYLE = """body{font-family:sans-serif;margin:24px;max-width:1200px;color:#222}
 table{border-collapse:collapse;margin:8px 0 16px}td,th{border:1px solid #ccc;padding:3px 6px;font-size:13px;
 vertical-align:top}th{background:#f3f3f3}.warning{background:#fff3cd;border:2px solid #d39e00;padding:8px 12px;
 margin:12px 0}.warning h2{margin:0 0 6px;font-size:18px}.notrun{color:#999}.incomplete{background:#fff3cd}
-code{font-family:monospace}"""
+code,pre{font-family:monospace}pre{white-space:pre-wrap;overflow-wrap:anywhere}.rounds{white-space:nowrap}"""
 
 
 def category_colours(categories: list[str]) -> dict[str, str]:
@@ -139,19 +139,20 @@ def provenance(found: Completeness) -> str:
 
 
 def game_section(game: str, results: Path, out: Path, episodes: list[dict], table_rows: list[dict],
-                 error_rows: list[dict], colours: dict[str, str]) -> str:
+                 error_rows: list[dict], colours: dict[str, str], tables: list[str]) -> str:
     own = [e for e in episodes if e["game"] == game]
     parts = [f"<h2 id='{esc(game)}'>{esc(game)}</h2>"]
     if table_rows:
         parts.append("<h3>Cells x models: EM / CB / ES / FG (function generalisation) (%) with 95 % bootstrap "
-                     "intervals</h3>" + cells_table(table_rows))
+                     "intervals (SARTCo protocol)</h3>" + cells_table(table_rows))
+    parts += tables  # sartco.report.html_tables: paper protocol, dialogue modes, ablations, repair
     errs = [r for r in error_rows if r["game"] == game]
     if errs:
         cats = [c for c in colours if any(r.get(c) for r in errs)]
         bars = [(f"{r['model']} / {r['experiment']}", {c: r.get(c, 0) for c in cats}) for r in errs]
         parts.append("<h3>Error categories per model and experiment (share of episodes)</h3>"
                      + charts.stacked_bars(bars, cats, colours))
-    dialogue = dialogue_table.dialogue_episodes(own)
+    dialogue = [d for d in dialogue_table.dialogue_episodes(own) if d["mode"] != "oneshot"]  # one round: no curve
     if dialogue:
         parts.append("<h3>ES by round of the dialogue modes</h3>" + charts.line_plot(dialogue_table.curves(dialogue)))
     counts, rows, cols, counted = failed_cells(results, [e for e in own if e["category"] != "harness_error"])
@@ -164,20 +165,24 @@ def game_section(game: str, results: Path, out: Path, episodes: list[dict], tabl
 
 
 def write(results: Path, out: Path, everything: list[dict], table_rows: list[dict], error_rows: list[dict],
-          categories: list[str], found: Completeness, harness_rows: list[dict], extra: str = "") -> list[str]:
-    """Write out/report.html; the names written. extra: sections (HTML, escaped) after the games'."""
+          categories: list[str], found: Completeness, harness_rows: list[dict],
+          tables: dict[str, list[str]] | None = None, after: str = "") -> list[str]:
+    """Write out/report.html; the names written. tables: game -> further HTML tables (sartco.report.html_tables);
+    after: sections (HTML, escaped) after the games' (contamination, robustness)."""
+    tables = tables or {}
     colours = category_colours(categories)
     where = Path(os.path.relpath(results.resolve(), out.resolve())).as_posix()
     by_game: dict[str, list] = defaultdict(list)
     for r in table_rows:
         by_game[r["game"]].append(r)
-    games = sorted({e["game"] for e in everything})
+    games = sorted({e["game"] for e in everything} | set(by_game))
     body = [f"<h1>SARTCo report</h1><p>{len(everything)} episodes from <code>{esc(results)}</code>. Transcript links "
             f"assume the results folder at <code>{esc(where)}</code> relative to this file.</p>",
             warnings(found, harness_rows),
             "<p>Games: " + ", ".join(f"<a href='#{esc(g)}'>{esc(g)}</a>" for g in games) + "</p>"]
-    body += [game_section(g, results, out, everything, by_game.get(g, []), error_rows, colours) for g in games]
-    body.append(extra)
+    body += [game_section(g, results, out, everything, by_game.get(g, []), error_rows, colours, tables.get(g, []))
+             for g in games]
+    body.append(after)
     body.append("<h2>Generation settings and provenance (run.json)</h2>" + provenance(found))
     page = (f"<!DOCTYPE html>\n<html lang='en'><head><meta charset='utf-8'><title>SARTCo report</title>"
             f"<style>{STYLE}</style></head><body>\n" + "\n".join(body) + "\n</body></html>\n")

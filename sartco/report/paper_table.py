@@ -34,12 +34,17 @@ METRICS = {**PAPER_SCORES, **OURS}
 NAMES = ("EM", "CB", "ES", "ES leak-free", "FG")
 
 
+def is_paper_episode(e: dict) -> bool:
+    """A report row (sartco.report.tables.collect) of an episode played in the paper protocol."""
+    return e["experiment_fields"].get("protocol") == PROTOCOL
+
+
 def paper_episodes(episodes: list[dict]) -> list[dict]:
     """The report rows of paper-protocol episodes, with their cell, scores and generation settings."""
     out = []
     for e in episodes:
         exp = e["experiment_fields"]
-        if exp.get("protocol") != PROTOCOL:
+        if not is_paper_episode(e):
             continue
         scores = e["scores"]
         models = e["player_models"] or {}
@@ -110,11 +115,17 @@ def _mean(values: list) -> float | None:
     return sum(values) / len(values) if values else None
 
 
+def column_label(row: dict, notes: dict[str, str]) -> str:
+    """A model's column: the paper's ("paper GPT-4") or these results' in the paper protocol, flagged when
+    its generation settings were not the paper's."""
+    return row["model"] + ("" if row["paper"] else ", paper protocol") + (f" {FLAG}" if row["model"] in notes else "")
+
+
 def markdown(header_rows: tuple[list[str], list[dict]], notes: dict[str, str], wanted: dict) -> str:
     _, rows = header_rows
     columns = []  # (model name, label) in first-seen order
     for r in rows:
-        label = r["model"] + (f" {FLAG}" if r["model"] in notes else "")
+        label = column_label(r, notes)
         if (r["model"], label) not in columns:
             columns.append((r["model"], label))
     lines: dict[tuple, dict] = {}
@@ -126,13 +137,14 @@ def markdown(header_rows: tuple[list[str], list[dict]], notes: dict[str, str], w
         out = [f"### {name}\n", "| " + " | ".join(head) + " |", "|" + "|".join("---" for _ in head) + "|"]
         for key, by_model in lines.items():
             cell = [key[0], key[1], key[2], f"{key[3]} ({key[4]})", key[5]]
-            cell += [_shown(by_model.get(model), metric) for model, _ in columns]
+            cell += [shown_score(by_model.get(model), metric) for model, _ in columns]
             out.append("| " + " | ".join(cell) + " |")
         tables.append("\n".join(out) + "\n")
     text = ("## cobot_instruct_paper: Table 3 in the paper protocol\n\n"
             "EM, CB (CodeBLEU > 0.5 pass rate), ES as shares 0..1, per turn and averaged over a cell's "
             "episodes, as the paper measured them; the paper's figures are the first columns (\"paper ...\"), "
-            "the models of these results follow. The paper's model-written rows used the CodeLlama-written "
+            "the models of these results follow (\"..., paper protocol\": played and scored by the authors' rules; "
+            "these runs appear in no SARTCo-protocol table below, so each figure is shown once). The paper's model-written rows used the CodeLlama-written "
             "instructions; GPT-4- and Claude-written instructions have no figure in the paper (\"no figure\"); "
             "\"not run\": a cell these results do not hold. Beyond the paper: \"ES leak-free\" runs each answer "
             "without the gold object function the paper puts in front of it (regular cells; elsewhere it "
@@ -147,7 +159,7 @@ def markdown(header_rows: tuple[list[str], list[dict]], notes: dict[str, str], w
     return text
 
 
-def _shown(row: dict | None, metric: str) -> str:
+def shown_score(row: dict | None, metric: str) -> str:
     if row is None or (not row["paper"] and not row["episodes"]):
         return "not run"
     if row[metric] is None:

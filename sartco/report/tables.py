@@ -35,7 +35,8 @@ from sartco.episode import (ATTEMPTS, CELL_F1, CODEBLEU, ERROR_CATEGORY, ES_AT_1
                             FUNCTION_GENERALISATION, HARNESS_REASON, MAX_ATTEMPTS)
 from sartco.world import ErrorCode
 
-from . import completeness, contamination, dialogue_table, harness_table, html, intervals, paper_table, passk, robustness
+from . import (completeness, contamination, dialogue_table, harness_table, html, html_tables, intervals, paper_table,
+               passk, robustness)
 from .files import load_json, markdown_table, number, percent, replace_stale, write_csv
 
 # clemgame entries whose cells are rows of another game's Table 3 (the published human- and
@@ -124,6 +125,8 @@ def table3(episodes: list[dict]) -> tuple[list[str], list[dict]]:
     groups: dict[tuple, list] = defaultdict(list)
     for e in episodes:
         if e["ablation"] or e["max_attempts"] > 1 or e["mode"] != "oneshot" or contamination.boards_of(e):
+            continue
+        if paper_table.is_paper_episode(e):  # scored once, in the paper protocol: paper_table3.md
             continue
         game = TABLE3_GAME.get(e["game"], e["game"])
         groups[(game, e["board_type"], e["object_type"], e["task"], e["source"], e["split"], e["model"])].append(e)
@@ -234,15 +237,16 @@ def run(args: argparse.Namespace) -> int:
     write_csv(out / "table3.csv", header, rows)
     md = "# SARTCo results (paper Table 3 layout)\n\n"
     if not rows:
-        md += "No episodes of the paper's protocol (only feedback experiments or dialogue modes: see repair.md, dialogue.md).\n"
+        md += "No episodes in the SARTCo protocol's Table 3 cells (paper protocol: paper_table3.md; feedback: repair.md; dialogue modes: dialogue.md).\n"
     for game in sorted({r["game"] for r in rows}):
-        md += table3_markdown([r for r in rows if r["game"] == game], f"{game}",
+        md += table3_markdown([r for r in rows if r["game"] == game], f"{game} (SARTCo protocol)",
                               ["board_type", "object_type", "task", "source"]) + "\n"
     (out / "table3.md").write_text(md, encoding="utf-8")
     written += ["table3.md", "table3.csv"]
     files, paper_md = paper_table.write(episodes, out, md)  # the paper protocol's Table 3, beside the paper's
     written += files
     header, rows = ablations(episodes)
+    ablation_rows = rows
     if rows:
         write_csv(out / "ablations.csv", header, rows)
         md = "# Ablations (val split)\n\n"
@@ -252,6 +256,7 @@ def run(args: argparse.Namespace) -> int:
         (out / "ablations.md").write_text(md, encoding="utf-8")
         written += ["ablations.md", "ablations.csv"]
     header, rows = repair(episodes)
+    extra = html_tables.sections(episodes, ablation_rows, rows)  # report.html's further tables
     if rows:
         write_csv(out / "repair.csv", header, rows)
         md = ("# Repair after execution feedback (feedback experiments)\n\n"
@@ -263,8 +268,8 @@ def run(args: argparse.Namespace) -> int:
         (out / "repair.md").write_text(md, encoding="utf-8")
         written += ["repair.md", "repair.csv"]
     written += dialogue_table.write(episodes, out)  # cobot_describe's dialogue modes
-    files, extra = contamination.write(episodes, out)  # published vs fresh boards; robustness across sources
-    more, extra_robust = robustness.write(args.results, episodes, out)
+    files, after = contamination.write(episodes, out)  # published vs fresh boards; robustness across sources
+    more, after_robust = robustness.write(args.results, episodes, out)
     written += files + more
     written += passk.write(args.results, out)  # pass@k of `sartco sample`'s runs (RESULTS/samples/s1..sN)
     header, rows = errors(everything)
@@ -278,7 +283,7 @@ def run(args: argparse.Namespace) -> int:
         print(paper_md)
     written += completeness.write(found, out)
     written += html.write(args.results, out, everything, cells, rows, header[4:], found, harness_table.rows(everything),
-                         extra + extra_robust)
+                          extra, after + after_robust)
     stale = replace_stale(out, written)
     print(f"sartco report: {len(everything)} episodes -> " + ", ".join(str(out / w) for w in written)
           + (f"; removed {len(stale)} stale files of an earlier report: " + ", ".join(stale) if stale else ""))

@@ -155,7 +155,7 @@ def test_report_flags_a_run_with_other_generation_settings(paper_episodes, play_
     [result] = play_episodes(instances([ep]), experiment(ep, "paper_sb_so_optimal_function_template"), game=GAME,
                              gen_args={"temperature": 0.7, "max_tokens": 300})
     md = _report(result["dir"].parents[3], tmp_path / "scores")
-    assert "| mock (!) |" in md
+    assert "| mock, paper protocol (!) |" in md
     assert "mock: run with temperature 0.7, max_tokens 300" in md
 
 
