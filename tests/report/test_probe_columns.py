@@ -9,7 +9,7 @@ def episode(task: str, es: float, fg: float | None, probed: bool, aborted: int =
     return {"game": "cobot_instruct", "board_type": "simple", "object_type": "simple", "task": task,
             "source": "template", "split": "test", "model": "m", "ablation": None, "max_attempts": 1,
             "mode": "oneshot", "aborted": aborted, "em": es, "cb": es, "es": es, "f1": es, "fg": fg,
-            "probed": probed}
+            "probed": probed, "experiment_fields": {}}
 
 
 def test_fg_beside_es_in_table3():
