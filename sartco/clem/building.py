@@ -167,8 +167,8 @@ def end_build(game_master, record: BuildRecord, attempts: list[BuildRecord], *, 
     from .probes import log_probes
 
     game_master.log_key(BUILD_KEY, record.to_json())
-    if instance is not None and record.error != ErrorCode.PARSE_ERROR:
-        log_probes(game_master, instance, record.builder_code)
+    if instance is not None:
+        log_probes(game_master, instance, record)
     set_attempts_outcome(game_master.state, [a.category for a in attempts])
     game_master.info.update({key: getattr(record, name) for key, name in INFO_FIELDS.items()})
 

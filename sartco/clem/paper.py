@@ -99,8 +99,7 @@ def finish_paper(game_master, instance: dict, answers: list[str]) -> None:
                                     "turns": turns})
     record = build_answers(instance, answers)
     log_build(game_master, record)
-    if record.error != ErrorCode.PARSE_ERROR:
-        log_probes(game_master, instance, record.builder_code)
+    log_probes(game_master, instance, record)
     set_share_outcome(game_master.state, score.es)
 
 

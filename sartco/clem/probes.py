@@ -171,7 +171,8 @@ def run_probes(instance: dict, code: str, seed: int = PROBE_SEED) -> dict:
             "share": built / len(probes) if probes else None}
 
 
-def log_probes(game_master, instance: dict, code: str) -> None:
-    """Probe a finished episode's answer and record it under PROBES_KEY (probed episodes only)."""
-    if probed(instance):
-        game_master.log_key(PROBES_KEY, run_probes(instance, code))
+def log_probes(game_master, instance: dict, record) -> None:
+    """Probe a finished episode's build `record` (sartco.clem.building.BuildRecord) and record it
+    under PROBES_KEY: probed episodes only, and only when the answer held code to run."""
+    if probed(instance) and record.error != ErrorCode.PARSE_ERROR:
+        game_master.log_key(PROBES_KEY, run_probes(instance, record.builder_code))

@@ -20,15 +20,15 @@ Feedback experiments (experiment field `attempts` N > 1, sartco.clem.feedback) a
   Max Attempts       N
   Attempt Categories the category of each attempt in order, joined by "," (a string, like
                      Error Category: clem eval keeps it in raw.csv and uses only Main Score/Aborted)
-The other scores (and Main Score = 100 x final ES) are those of the last attempt.
+The other scores (and Main Score = 100 x final ES) are those of the last attempt. A last
+attempt without code after attempts with code is lost, not aborted: ES/EM/CodeBLEU/cell scores 0.
 
 Probed episodes (optimal_function and repetition, sartco.clem.probes) add:
   Function Generalisation  share of the K probes built exactly (NaN when aborted or not probed)
   Probe Categories   each probe's category in order ("success", an ErrorCode value or
                      "no_function"), joined by ","
   Probe Function     whose function was probed: "model", "given" (a repetition answer calling the
-                     given function) or "none" A last
-attempt without code after attempts with code is lost, not aborted: ES/EM/CodeBLEU/cell scores 0.
+                     given function) or "none"
 """
 from __future__ import annotations
 
