@@ -94,5 +94,8 @@ cat "$SCORES/paper_table3.md"   # the paper protocol beside the paper's figures,
 echo
 cat "$SCORES/repair.md"
 echo
+# the dialogue modes' recovery curves (ES after round k; the whole table and the plot: dialogue.md)
+echo "# cobot_describe as a dialogue"; echo
+sed -n '/^## ES after round k/,/^## Per experiment/p' "$SCORES/dialogue.md" | sed '$d'
 cat "$SCORES/contamination.md"; echo; cat "$SCORES/robustness.md"; echo   # issue 24 items 3-4
 echo "report (tables, charts, example transcripts; open in a browser): $SCORES/report.html"

@@ -83,20 +83,31 @@ def curves(episodes: list[dict]) -> dict[tuple[str, str], list[float]]:
     return out
 
 
+def curve_table(lines: dict[tuple[str, str], list[float]]) -> str:
+    """The curves as a Markdown table: model, mode, ES after round 0..R (blank past a mode's last round)."""
+    n = max(len(values) for values in lines.values())
+    return markdown_table(["model", "mode", *(f"round {k}" for k in range(n))],
+                          [[model, mode, *values, *[""] * (n - len(values))] for (model, mode), values in lines.items()])
+
+
 def write(episodes: list[dict], out: Path) -> list[str]:
     """dialogue.md / .csv / dialogue_rounds.svg from the rows of sartco.report.tables.collect."""
     episodes = dialogue_episodes(episodes)
     if not episodes:
         return []
-    rows = rows_of(episodes)
+    rows, lines = rows_of(episodes), curves(episodes)
     write_csv(out / "dialogue.csv", HEADER, rows)
-    (out / "dialogue_rounds.svg").write_text(charts.line_plot(curves(episodes)), encoding="utf-8")
+    (out / "dialogue_rounds.svg").write_text(charts.line_plot(lines), encoding="utf-8")
     md = ("# cobot_describe as a dialogue (clarification questions, corrections)\n\n"
+          "## ES after round k\n\n"
+          "The recovery curves: ES (%, aborted = 0) of the board standing after k corrections (round 0 = the "
+          "first build), per model and mode over all its experiments.\n\n"
+          "![ES after round k](dialogue_rounds.svg)\n\n" + curve_table(lines) + "\n"
+          "## Per experiment\n\n"
           "ES@1 / ES@N, F1@1 / F1@N = execution success and cell F1 (%) after the first / the last build "
           "(aborted = 0); K / R = questions / corrections allowed; first success = mean round of the first "
           "success over the episodes that succeeded (0 = the first build); questions, corrections and "
-          "describer words = means per played episode.\n\n"
-          "![ES after round k](dialogue_rounds.svg)\n\n")
+          "describer words = means per played episode.\n\n")
     md += markdown_table(["model", "game", "experiment", "mode", "K", "R", "episodes", "played", "ES@1", "ES@N", "F1@1", "F1@N",
                "first success", "questions", "corrections", "describer words"],
               [[r[h] for h in HEADER] for r in rows])
