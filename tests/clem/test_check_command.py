@@ -93,6 +93,8 @@ def test_the_game_by_name_for_a_file_anywhere(tmp_path, capsys, monkeypatch):
     code, out, err = check(capsys, path)
     assert (code, out) == (2, [])
     assert err == [f"sartco check-instances: {path}: not in the in/ folder of a game; name its game with -g"]
+    code, out, err = check(capsys, path, "-g", "no_such_game")
+    assert (code, err) == (2, [f"sartco check-instances: no game 'no_such_game' in the game registry of {REPO}"])
 
 
 def test_the_describe_game_checks_its_own_fields(game_in, capsys):
