@@ -5,7 +5,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 RESULTS ?= results
 
-.PHONY: install main test local clean-results
+.PHONY: install main test lint local clean-results
 
 $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -23,6 +23,10 @@ main: $(STAMP)
 ## Unit, property and end-to-end tests.
 test: $(STAMP)
 	$(BIN)/python -m pytest
+
+## ruff with the rules of pyproject.toml ([tool.ruff]); CI runs it before the tests.
+lint: $(STAMP)
+	$(BIN)/ruff check .
 
 ## A real small model (Gemma 3 270M on a local llama.cpp server) over a slice of both games.
 local: $(STAMP)

@@ -19,6 +19,7 @@ COMMANDS = {
     "report": ("sartco.report.tables", "paper-style tables from a clemcore results folder"),
     "compare": ("sartco.report.compare", "two models on the same episodes: paired differences, McNemar test"),
     "sample": ("sartco.clem.sampling", "N samples of every episode (clem run N times) for pass@k"),
+    "check-instances": ("sartco.clem.check", "check an instance file as clem run does before any model is asked"),
     "resume": ("sartco.clem.resume", "play and score exactly the missing episodes of an interrupted clem run"),
     "export-prompts": ("sartco.protocols.export", "the prompts of a protocol's episodes (paper or sartco) as JSON lines"),
     "score-responses": ("sartco.protocols.score", "score raw answers (JSON lines) in a protocol (paper or sartco)"),

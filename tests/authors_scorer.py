@@ -42,7 +42,7 @@ def reference(program: str) -> tuple:
         scored = scorer(program, board)
     except WorldError as exc:
         return False, exc.code, board.cells()
-    except Exception as exc:  # noqa: BLE001 - the program's own error, as the sandbox names it
+    except Exception as exc:  # the program's own error, as the sandbox names it
         code = next((c for kind, c in _CODES.items() if isinstance(exc, kind)), ErrorCode.RUNTIME_ERROR)
         return False, code, board.cells()
     return True, None, scored.cells()

@@ -18,13 +18,15 @@ import this module, not the class, into a master.py:
 Instance files are checked up front. `clem run` loads the models, then the game (this class),
 then the instance file, and plays; it hands the game neither the instance rows before playing
 nor the `-e` experiment name, and logs any exception with a traceback and goes on (an unknown
-experiment is "0 rows", exit 0). So under `clem run` the constructor reads the instance file
-itself (the one clemgame.json or `-i` names) and the `-e` option from clem's command line, and
+experiment is "0 rows", exit 0). So under `clem run` the constructor calls `check_instances` with
+the instance file (`instance_file`: the one clemgame.json or `-i` names) and the `-e` experiment
+(`clem_run_options`, the one reader of clem's command line: clemcore hands a game no -e), and
 before any model is asked stops with one line naming the file, the experiment and the field
 (exit code 2): missing or truncated file, no experiments, an episode without a field the master
 reads or with a field of the wrong JSON type, a bad value (instance_values.py: board size, target
 shapes, colours, cells and buildability, empty turns, unknown board kinds, tasks, modes, variants),
-an unknown experiment name (with the list).
+an unknown experiment name (with the list). `sartco check-instances FILE` (sartco.clem.check)
+makes the same check without clem.
 """
 from __future__ import annotations
 
@@ -113,9 +115,20 @@ def check_instances(path: str, fields, experiment: str | None = None) -> int:
     return sum(len(e["game_instances"]) for e in experiments if experiment in (None, e["name"]))
 
 
-def clem_run_options(argv: list[str]) -> argparse.Namespace | None:
-    """`clem run`'s -e (experiment_name) and -r (results_dir) from clem's command line; None when
-    this process is not `clem run`."""
+class ClemRun(typing.NamedTuple):
+    experiment: str | None  # clem run -e: the one experiment to play, None for all
+    results_dir: str        # clem run -r
+
+
+def clem_run_options(argv: list[str] | None = None) -> ClemRun | None:
+    """`clem run`'s -e and -r, read from clem's command line (`argv`, default sys.argv); None when
+    this process is not `clem run`.
+
+    The one place the package reads the command line, and why it must: clemcore 3.7's `cli.run`
+    keeps both options to itself (-e becomes a row filter applied after the game is built, -r the
+    folder of its own callbacks) and hands a GameBenchmark only the game spec (whose `instances`
+    -i has already set). An unknown -e would otherwise play "0 rows" and exit 0."""
+    argv = sys.argv if argv is None else argv
     if not argv or os.path.basename(argv[0]) not in ("clem", "clem.exe"):
         return None
     parser = argparse.ArgumentParser(add_help=False)
@@ -126,13 +139,14 @@ def clem_run_options(argv: list[str]) -> argparse.Namespace | None:
         args, _ = parser.parse_known_args(argv[1:])
     except SystemExit:  # clem's own parser reports the command line's mistakes
         return None
-    return args if args.command == "run" else None
+    return ClemRun(args.experiment_name, args.results_dir) if args.command == "run" else None
 
 
-def clem_run_experiment(argv: list[str]) -> tuple[bool, str | None]:
-    """(is this process `clem run`?, its -e experiment name or None), read from clem's command line."""
-    options = clem_run_options(argv)
-    return options is not None, options.experiment_name if options else None
+def instance_file(game_spec) -> str:
+    """The instance file clemcore reads for a game spec: in/<instances>.json of its game folder
+    (`instances` from clemgame.json or clem run -i; "instances" when neither names one)."""
+    name = getattr(game_spec, "instances", None) or "instances"
+    return os.path.join(game_spec.game_path, "in", name if name.endswith(".json") else f"{name}.json")
 
 
 class BuildBenchmark(GameBenchmark):
@@ -143,11 +157,10 @@ class BuildBenchmark(GameBenchmark):
     def __init__(self, game_spec):
         super().__init__(game_spec)
         self.recorder = None  # writes run.json (sartco.clem.provenance) under clem run and sartco resume
-        options, resuming = clem_run_options(sys.argv), provenance.RESUMING
-        if options or resuming:
-            experiment = options.experiment_name if options else None
-            name = getattr(game_spec, "instances", None) or "instances"
-            path = os.path.join(game_spec.game_path, "in", name if name.endswith(".json") else f"{name}.json")
+        run, resuming = clem_run_options(), provenance.RESUMING
+        if run or resuming:
+            experiment = run.experiment if run else None
+            path = instance_file(game_spec)
             try:
                 selected = check_instances(path, self.fields_of, experiment)
             except InstanceFileError as error:
@@ -156,7 +169,7 @@ class BuildBenchmark(GameBenchmark):
             if resuming:
                 results_dir, selected = resuming
             else:
-                results_dir = options.results_dir
+                results_dir = run.results_dir
             self.recorder = provenance.RunRecorder(game_spec.game_name, results_dir, path, experiment, selected,
                                                    resume=bool(resuming))
 

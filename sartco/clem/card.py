@@ -154,7 +154,7 @@ class ScoreCard:
                                  interactions)
             record = interactions.get(BUILD_KEY)
             content = card_html(scores, BuildRecord.from_json(record).summary() if record else None)
-        except Exception as exc:  # noqa: BLE001 - a fault of the card never loses the episode
+        except Exception as exc:  # a fault of the card never loses the episode
             content = text_block(f"no score card: {fault_reason('score card', exc)}")
         self.log_key(MARKDOWN_KEY, True)
         self.log_event(from_="GM", to="GM", action={"type": CARD_EVENT, "content": content})

@@ -61,7 +61,7 @@ class HarnessGuard:
                 self.count_request()                                  # messages, a request (not parsed)
                 raise HarnessFault(response.reason)
             return super().step(response)
-        except Exception as exc:  # noqa: BLE001 - a fault of the game master or the sandbox, never the model's
+        except Exception as exc:  # a fault of the game master or the sandbox, never the model's
             record = parse_failure_for(self.harness_instance, fault_reason("game master", exc), error=HARNESS)
             log_build(self, record, final=False)
             end_build(self, record, [record])

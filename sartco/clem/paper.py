@@ -6,7 +6,7 @@ aborts: their scorer reads every answer after the dialogue (sartco.paper.reading
 and scores each turn (sartco.paper.scoring.score_dialogue: EM, CB pass, ES with the "while"
 refusal). `finish_paper` does the same once the last answer is in, logs one GM->GM `paper_turn`
 event per turn (the reading and its scores; shown escaped, the code as code blocks) and the dialogue's scores under PAPER_KEY, and also
-records our own build of the whole answer (sartco.parsing on each answer, the turns joined, run
+records our own build of the whole answer (sartco.clem.parsing on each answer, the turns joined, run
 once on a fresh board: ES, cell F1, error category; an answer without code is our parse_error,
 but the episode goes on). The episode succeeds when every turn's ES does.
 

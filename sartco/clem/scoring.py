@@ -57,7 +57,7 @@ class BuildScorer(GameScorer):
         scores.json."""
         try:
             super().compute_scores(interactions)
-        except Exception as exc:  # noqa: BLE001 - a fault of the scorer, never the model's
+        except Exception as exc:  # a fault of the scorer, never the model's
             harness_scores(self, fault_reason("scorer", exc))
 
     def compute_round_score(self, round_idx, round_events) -> None:

@@ -62,7 +62,7 @@ def follow(instructions, task: str, context: str = "", rows: int = DEFAULT_ROWS,
         return emit.optimal_function(steps, name)
     except FollowError:
         raise
-    except Exception as exc:  # noqa: BLE001 - a grammar bug must still fail in the documented way
+    except Exception as exc:  # a grammar bug must still fail in the documented way
         raise FollowError(f"follower failed on {' '.join(texts).strip()!r:.120}: "
                           f"{type(exc).__name__}: {exc}") from exc
 
@@ -75,7 +75,7 @@ def follow_turn(instruction: str, history=(), rows: int = DEFAULT_ROWS, cols: in
             if isinstance(instruction, str) else None
     except FollowError:
         raise
-    except Exception as exc:  # noqa: BLE001
+    except Exception as exc:
         raise FollowError(f"follower failed on {instruction!r:.120}: {type(exc).__name__}: {exc}") from exc
     if steps is None:
         raise FollowError("instruction must be a string")

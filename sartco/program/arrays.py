@@ -45,7 +45,7 @@ def _strides(shape: tuple) -> tuple:
     return tuple(_count(shape[i + 1:]) for i in range(len(shape)))
 
 
-class ndarray:  # noqa: N801 - numpy's name
+class ndarray:  # numpy's name
     """Items of `base` (a flat list) at offset + sum(index * stride): indexing by ints and
     slices and `.T` give views of the same base, as numpy's basic indexing does."""
 
@@ -77,7 +77,7 @@ class ndarray:  # noqa: N801 - numpy's name
     dtype = property(lambda self: {float: "float64", bool: "bool"}.get(_kind(self.data), "int64"))
 
     @property
-    def T(self):  # noqa: N802 - numpy's name
+    def T(self):  # numpy's name
         return ndarray(self.base, self.shape[::-1], self.offset, self.strides[::-1])
 
     def tolist(self):

@@ -24,7 +24,7 @@ def read(obj, name):
     return obj
 
 
-class attrgetter:  # noqa: N801 - operator's name
+class attrgetter:  # operator's name
     """operator.attrgetter(*names): f(obj) -> obj.name, or a tuple for several names."""
 
     __slots__ = ("_names",)
@@ -44,7 +44,7 @@ class attrgetter:  # noqa: N801 - operator's name
         return f"operator.attrgetter({', '.join(map(repr, self._names))})"
 
 
-class methodcaller:  # noqa: N801 - operator's name
+class methodcaller:  # operator's name
     """operator.methodcaller(name, *args, **kwargs): f(obj) -> obj.name(*args, **kwargs)."""
 
     __slots__ = ("_name", "_args", "_kwargs")

@@ -134,7 +134,7 @@ def execute_many(programs, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, l
         for i, answer in zip(todo, answers):
             results[i] = _decode(answer) if type(answer) is bytes else answer
         return [r if r is not None else failed(E.HARNESS_ERROR, "the sandbox returned no result") for r in results]
-    except Exception as exc:  # noqa: BLE001 - the caller must never see an exception
+    except Exception as exc:  # the caller must never see an exception
         n = len(programs) if isinstance(programs, list) else 1
         return [failed(E.HARNESS_ERROR, f"sandbox failure: {type(exc).__name__}: {exc}") for _ in range(n)]
 

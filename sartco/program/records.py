@@ -40,7 +40,7 @@ def namedtuple(typename, field_names, *, rename=False, defaults=None):
     return _record(typename, base, {})
 
 
-def NamedTuple(typename, fields=None, /, **kwargs):  # noqa: N802 - typing's name
+def NamedTuple(typename, fields=None, /, **kwargs):  # typing's name
     """typing.NamedTuple's functional form; as a base, classes.build_class calls named_record."""
     pairs = list(fields) if fields is not None else list(kwargs.items())
     return namedtuple(typename, [name for name, _ in pairs])

@@ -133,7 +133,7 @@ def compile_program(source: str, limits, cache: bool = True) -> tuple:
     except MemoryError:  # the worker's memory, not the source: not cached, and the worker retires
         result, keep = (None, E.RESOURCE_LIMIT, "the sandbox ran out of memory while compiling the program"), False
         _spoil()
-    except Exception as exc:  # noqa: BLE001 - a compiler failure must not end the worker
+    except Exception as exc:  # a compiler failure must not end the worker
         result, keep = (None, E.HARNESS_ERROR, clean(f"internal error while compiling: {type(exc).__name__}: {exc}")), False
         _spoil()
     finally:
@@ -178,7 +178,7 @@ def _describe(exc: BaseException) -> str:
         else:
             detail = str(exc)
             text = f"{type(exc).__name__}: {detail}" if detail else type(exc).__name__
-    except Exception:  # noqa: BLE001
+    except Exception:
         text = type(exc).__name__
     text = text[:MESSAGE_CHARS]
     return f"line {line}: {text}" if line else text
@@ -243,7 +243,7 @@ def run(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE, 
             exec(code, env, scope)
         finally:
             sys.setrecursionlimit(old_limit)
-    except BaseException as exc:  # noqa: BLE001 - everything the program does ends here
+    except BaseException as exc:  # everything the program does ends here
         error, message = _verdict(exc, limits)
         del exc
     # a budget stop, refusal, RecursionError or MemoryError that the program swallowed (finally:
@@ -264,7 +264,7 @@ def run(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE, 
         message = clean(message)
     except MemoryError:
         error, message, cells, puts = E.RESOURCE_LIMIT, "the sandbox ran out of memory while reading the board", {}, 0
-    except Exception as exc:  # noqa: BLE001 - never `ok` after an internal error
+    except Exception as exc:  # never `ok` after an internal error
         error, message, cells, puts = E.HARNESS_ERROR, clean(f"internal error: {type(exc).__name__}"), {}, 0
         _spoil()
     if error in (E.TIMEOUT, E.RESOURCE_LIMIT):

@@ -106,7 +106,7 @@ def _answers(lines, rows, cols, limits, workers, cache) -> bytes:
     items = [b"%d %s" % (number, raw) for number, raw in lines]
     try:
         answers = dispatch("line", items, keys, rows, cols, limits, workers, cache)
-    except Exception as exc:  # noqa: BLE001 - every line gets an answer, whatever happens
+    except Exception as exc:  # every line gets an answer, whatever happens
         answers = [failed(ErrorCode.HARNESS_ERROR, f"sandbox failure: {exc}")] * len(items)
     text = []
     for (number, raw), ans in zip(lines, answers):
@@ -145,13 +145,13 @@ def serve(inp, out, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, limits: 
                 room.acquire()
                 events.put(("batch", lines))
             events.put(("end", None))
-        except BaseException as exc:  # noqa: BLE001 - handed to the main thread
+        except BaseException as exc:  # handed to the main thread
             events.put(("end", exc))
 
     def work(slot, lines):
         try:
             events.put(("done", (slot, (_answers(lines, rows, cols, limits, workers, cache), len(lines)))))
-        except BaseException as exc:  # noqa: BLE001 - cannot happen (_answers catches); never hang
+        except BaseException as exc:  # cannot happen (_answers catches); never hang
             events.put(("done", (slot, exc)))
 
     threading.Thread(target=read, daemon=True).start()

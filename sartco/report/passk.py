@@ -78,7 +78,7 @@ def samples_only(results: Path) -> bool:
 def write_alone(results: Path, out: Path) -> int:
     """`sartco report` of a folder with nothing but samples: passk.md / .csv."""
     out.mkdir(parents=True, exist_ok=True)
-    print(f"sartco report: samples only -> " + ", ".join(str(out / w) for w in write(results, out)))
+    print("sartco report: samples only -> " + ", ".join(str(out / w) for w in write(results, out)))
     return 0
 
 

@@ -64,14 +64,6 @@ class Board:
         stacks = self.stacks
         return {key: [*map(list, stack)] for key, stack in compress(zip(_keys(self.cols), stacks), stacks)}
 
-    @classmethod
-    def from_cells(cls, cells: Cells, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS) -> "Board":
-        board = cls(rows, cols)
-        for key, stack in cells.items():
-            r, c = parse_key(key)
-            board.stacks[r * cols + c] = [(shape, color) for shape, color in stack]
-        return board
-
 
 def _bad_size(rows, cols):
     for name, value in (("rows", rows), ("cols", cols)):

@@ -3,7 +3,6 @@ with backoff, the same answers as sequential; and `sartco bench-run` on a small 
 run's scores.json files equal the sequential run's)."""
 import json
 import time
-from pathlib import Path
 
 import openai
 import pytest

@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from sartco.clem.benchmark import EPISODE_FIELDS, InstanceFileError, check_instances, clem_run_experiment
+from sartco.clem.benchmark import EPISODE_FIELDS, InstanceFileError, check_instances, clem_run_options
 
 REPO = Path(__file__).resolve().parents[2]
 GAME = REPO / "games" / "cobot_instruct"
@@ -124,5 +124,6 @@ def test_no_experiments(tmp_path, data):
     (["/usr/bin/pytest", "-e", "abc"], (False, None)),
     ([], (False, None)),
 ])
-def test_clem_run_experiment(argv, expected):
-    assert clem_run_experiment(argv) == expected
+def test_clem_run_options(argv, expected):
+    run = clem_run_options(argv)
+    assert (run is not None, run and run.experiment) == expected

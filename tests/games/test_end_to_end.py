@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from play_helpers import REPO, sh
+from play_helpers import sh
 EXPERIMENT = "rb_so_repetition_template_examples_0"  # 10 val episodes, the smallest kind
 
 

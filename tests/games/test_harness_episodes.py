@@ -153,7 +153,7 @@ def test_cobot_describe_records_a_model_server_without_answer(play_episodes, mon
     _harness(result, "model server: InternalServerError after 2 tries")
 
 
-def test_the_paper_protocol_records_a_harness_fault(paper_episodes, play_episodes, monkeypatch, fresh_pool):
+def test_the_paper_protocol_records_a_harness_fault(paper_episodes, play_episodes, monkeypatch, fresh_pool):  # noqa: F811 - the imported fixture
     ep = paper_episodes[VARIANTS[0]]
     no_worker(monkeypatch, "no worker for the paper protocol")
     result, = play_episodes(paper_instances([ep]), paper_experiment(ep, "harness_paper"),

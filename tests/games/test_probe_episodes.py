@@ -1,7 +1,6 @@
 """Function probes in played episodes: the scores in scores.json of cobot_instruct and
 cobot_describe episodes played through clemcore's real loop (sartco.clem.probes)."""
 import json
-from pathlib import Path
 
 from play_helpers import GAMES, fence
 

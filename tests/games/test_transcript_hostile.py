@@ -4,7 +4,6 @@ sandbox's message about it) and of the paper protocol (the paper_turn event: wha
 scorer read) go through clemcore's real loop, `clem transcribe`, and headless Chromium's DOM.
 Before, the paper_turn event logged the read answer unescaped: `<img src=x onerror=...>` ran."""
 import html.parser
-import json
 import subprocess
 import sys
 from pathlib import Path

@@ -82,7 +82,7 @@ REBIND = [
     f"board = init_board(8, 8)\n{RED}",                                       # puts on the new board lost
     f"{RED}\nboard = init_board(8, 8)\nput(board, 'nut', 'blue', 1, 1)",      # the board before stays
     f"global board\nboard = init_board(8, 8)\n{RED}",
-    f"def make():\n    b = init_board(8, 8)\n    put(b, 'nut', 'red', 3, 3)\n    return b\nboard = make()",
+    "def make():\n    b = init_board(8, 8)\n    put(b, 'nut', 'red', 3, 3)\n    return b\nboard = make()",
 ]
 
 

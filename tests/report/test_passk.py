@@ -6,7 +6,7 @@ import json
 import subprocess
 import sys
 from itertools import combinations
-from math import comb, prod
+from math import prod
 
 import pytest
 

@@ -25,7 +25,8 @@ def test_a_stack_shows_each_piece_bottom_to_top_and_differing_cells_are_framed()
     washer = re.search(r'<polygon points="[^"]*" fill="#1f77b4"', target).group(0)  # a diamond: 4 points
     nut = re.search(r'<polygon points="[^"]*" fill="#2ca02c"', target).group(0)     # a hexagon: 6 points
     assert washer.count(",") == 4 and nut.count(",") == 6
-    y = lambda poly: max(float(p.split(",")[1]) for p in re.search(r'points="([^"]*)"', poly).group(1).split())
+    def y(poly):
+        return max(float(p.split(",")[1]) for p in re.search(r'points="([^"]*)"', poly).group(1).split())
     assert y(washer) > y(nut)  # the bottom piece lowest
     assert svg.count('stroke="#e0007a" stroke-width="3"') == 2 + 1  # the cell on both grids, the legend
     assert {"washer", "nut", "screw", "bridge", "red", "green", "blue", "yellow", "differs"} <= set(texts(svg))
