@@ -123,3 +123,26 @@ def test_the_script_and_the_command_write_the_same_bytes(tmp_path, capsys):
     assert data["dataset"]["generator_seed"] == 3 and len(data["experiments"]) == 5
     assert [i["game_id"] for e in data["experiments"] for i in e["game_instances"]] == [0] * 5  # per experiment
     assert f"{written}: 5 experiments, 5 episodes" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("spoil, message", [
+    ("config", "{tmp}/v1/manifest.json: no 'config'"),
+    ("train", "{tmp}/v1/simple_simple_train.json: missing (the in-context examples come from its train split)"),
+])
+def test_a_fresh_run_on_a_dataset_without_config_or_train_split_says_which_and_exits_2(spoil, message, tmp_path,
+                                                                                          capsys):
+    """The fresh boards follow the seed-42 dataset's config and draw their examples from its train split:
+    a dataset lacking either is named in one line, not a traceback."""
+    dataset = tmp_path / "v1"
+    shutil.copytree(REPO / "instances" / "v1", dataset)
+    manifest = json.loads((dataset / "manifest.json").read_text())
+    if spoil == "config":
+        del manifest["config"]
+    else:
+        del manifest["files"]["simple_simple_train.json"]
+    (dataset / "manifest.json").write_text(json.dumps(manifest))
+    before = {p: p.stat().st_mtime_ns for p in (REPO / "games" / "cobot_instruct" / "in").iterdir()}
+    assert sartco_main(["instances", "instruct-fresh", "7", "--dataset", str(dataset)]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith(f"sartco instances: {message.replace('{tmp}', str(tmp_path))}") and err.count("\n") == 1
+    assert before == {p: p.stat().st_mtime_ns for p in before}
