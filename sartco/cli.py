@@ -13,6 +13,7 @@ COMMANDS = {
     "execute": ("sartco.program.serve", "run programs from JSON lines on stdin in the sandbox"),
     "bench-execute": ("sartco.bench_execute", "throughput of `sartco execute` against bare compile()"),
     "generate": ("sartco.instances.generate", "write a dataset version from a YAML config and a seed"),
+    "instances": ("sartco.instancegen.command", "write the games' instance files (games/*/in/) from a dataset"),
     "stats": ("sartco.instances.stats", "table 1 of the paper, computed by enumeration"),
     "import": ("sartco.published.importer", "convert the published SARTCo files into the dataset format"),
     "import-instructions": ("sartco.instances.describer_import", "turn describer results into a dataset"),

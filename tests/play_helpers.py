@@ -6,12 +6,10 @@
                                                   one (sartco.episode.InstructEpisode), with
                                                   the `script` mock answers instead of gold code
 - fence(code)                                     an answer with its code in a fenced block
-- load_generator(game)                            a game's instancegenerator.py as a module
 - sh(*args) / clem(*args)                          a command (clemcore's CLI) that must succeed
 """
 from __future__ import annotations
 
-import importlib.util
 import json
 import subprocess
 import sys
@@ -72,14 +70,6 @@ def play(instances: list[dict], experiment: dict, results_dir: Path, model: str 
                     "scores": json.loads((d / "scores.json").read_text().replace("NaN", "null")) if score else None,
                     "dir": d})
     return out
-
-
-def load_generator(game: str):
-    """games/<game>/instancegenerator.py as a module (the games are folders, not packages)."""
-    spec = importlib.util.spec_from_file_location(f"{game}_instancegenerator", GAMES / game / "instancegenerator.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
 
 
 def sh(*args, cwd=REPO, timeout=900) -> subprocess.CompletedProcess:

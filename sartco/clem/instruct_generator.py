@@ -1,4 +1,4 @@
-"""The base of cobot_instruct's instance generators (games/cobot_instruct/instancegenerator.py and
+"""The base of cobot_instruct's instance generators (sartco.instancegen.instruct and
 sartco.clem.fresh): one experiment per cell, with or without execution feedback, and its episodes
 from board records, each with its in-context examples."""
 from __future__ import annotations

@@ -21,7 +21,7 @@ LAYERS = [
     ("paper", ["sartco.paper"]),
     ("clem", ["sartco.clem"]),
     ("protocols", ["sartco.protocols"]),
-    ("top", ["sartco.report", "sartco.cli", "sartco.__main__", "sartco.bench_execute", "games", "tools"]),
+    ("top", ["sartco.report", "sartco.instancegen", "sartco.cli", "sartco.__main__", "sartco.bench_execute", "games", "tools"]),
 ]
 TOP = len(LAYERS) - 1  # the entry points may use each other (the `sartco` command dispatches to them)
 RANK = {package: rank for rank, (_, packages) in enumerate(LAYERS) for package in packages}

@@ -1,12 +1,15 @@
 """SARTCo as a training environment: the train split instance file and clemcore's gym env over
 it (sartco.clem.training), driven by a scripted policy: observations, rewards, info, episode ends."""
 import json
+from argparse import Namespace
 from pathlib import Path
 
 import pytest
 
-from play_helpers import REPO, load_generator
+from play_helpers import REPO
 from sartco.clem.training import gym_env
+from sartco.instancegen.command import generate
+from sartco.instancegen.options import DEFAULTS
 
 GAME_DIR = REPO / "games" / "cobot_instruct"
 
@@ -15,10 +18,7 @@ GAME_DIR = REPO / "games" / "cobot_instruct"
 def train_file(tmp_path_factory):
     """A small train instance file (2 episodes per cell), written outside the repository."""
     folder = tmp_path_factory.mktemp("train")
-    module = load_generator("cobot_instruct")
-    gen = module.CobotInstructInstanceGenerator()
-    path = gen.generate(str(folder / "instances_train.json"), seed=42, dataset_dir=REPO / "instances" / "v1",
-                        part="train", train_episodes=2)
+    [path] = generate("instruct-train", Namespace(**{**DEFAULTS, "train_episodes": 2}), game_dir=folder)
     return Path(path)
 
 
@@ -39,8 +39,8 @@ def test_train_split_is_its_own_file_of_train_boards(train_file):
             assert inst["board_id"] in train_ids and inst["board_id"] not in test_ids
             assert inst["board_id"] not in inst["examples"]  # never its own board as an example
     # the same seed gives the same file
-    again = load_generator("cobot_instruct").CobotInstructInstanceGenerator().generate(
-        str(train_file.parent / "again.json"), seed=42, dataset_dir=REPO / "instances" / "v1", part="train", train_episodes=2)
+    [again] = generate("instruct-train", Namespace(**{**DEFAULTS, "train_episodes": 2}),
+                       game_dir=train_file.parents[1] / "again")
     assert Path(again).read_bytes() == train_file.read_bytes()
 
 

@@ -160,14 +160,13 @@ def test_report_flags_a_run_with_other_generation_settings(paper_episodes, play_
 
 
 def test_the_generator_makes_one_experiment_per_cell_with_the_papers_settings():
-    import importlib.util
     from pathlib import Path
 
+    from sartco.instancegen.common import InstanceFile
+    from sartco.instancegen.instruct import paper
+
     GAME_DIR = Path(__file__).resolve().parents[2] / "games" / "cobot_instruct"
-    spec = importlib.util.spec_from_file_location("cobot_instruct_instancegenerator", GAME_DIR / "instancegenerator.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    gen = module.PaperInstanceGenerator()
+    gen = InstanceFile(GAME_DIR, paper)
     gen.on_generate(42, dataset_dir=GAME_DIR.parents[1] / "instances" / "v1")  # in memory: nothing written
     exps = {e["name"]: e for e in gen.instances["experiments"]}
     table3 = json.loads((DEFAULT_DATA / "paper-protocol" / "table3.json").read_text())

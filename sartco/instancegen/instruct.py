@@ -1,0 +1,216 @@
+"""cobot_instruct's instance files, one function per file (`sartco instances instruct...`,
+docs/ARCHITECTURE.md "Datasets"). Each is played under its own clemgame.json entry (its own game
+name, so its results, and clem eval's clemscore, never mix with the others):
+
+  instances.json            cobot_instruct: the template cells of the paper's Table 3, test split
+                            (the leaderboard number means these and nothing else);
+  instances_ablations.json  cobot_instruct_ablations: val split, 0..10 in-context examples and
+                            each prompt section removed;
+  instances_feedback.json   cobot_instruct_feedback: the Table 3 template cells, `<cell>_feedback`,
+                            with `attempts` (the first attempt plus up to N - 1 repairs after
+                            execution feedback, sartco.clem.feedback) and `feedback_of` (the cell);
+  instances_smoke.json      the first --smoke episodes of each Table 3 template cell (the same
+                            episodes as in instances.json): `clem run -g cobot_instruct -i instances_smoke`;
+  instances_published.json  cobot_instruct_published (gitignored: it embeds the published texts),
+                            from the imported published data (`sartco import ../shared/sartco-data/published
+                            --out instances/published`): the human- and model-written cells of Table 3;
+  instances_published_feedback.json  cobot_instruct_published_feedback (gitignored);
+  instances_train.json      the train split, for training (sartco.clem.training): one experiment per
+                            cell, `<cell>_train`, over the first --train-episodes train boards (0: all);
+                            the examples from the same pool, never the episode's own board;
+  instances_describers.json from a `sartco import-instructions` dataset: one experiment per
+                            describer model and board kind, the builder task of cobot_describe;
+  instances_paper.json      cobot_instruct_paper (gitignored): the paper protocol, every Table 3 cell
+                            on the published test files (read from ../shared at generation time),
+                            named paper_<cell>_<task>_<source>, each recording protocol "paper", its
+                            variant, where its examples came from and the paper's generation settings
+                            (temperature 0, 250 tokens: `clem run -t 0 -l 250`);
+  instances_fresh.json      cobot_instruct_fresh (gitignored; sartco.clem.fresh): each template
+                            cell's published test boards beside as many fresh boards of a seed.
+
+Experiment names: <board>_<object>_<task>_<source>[_<ablation>], board sb|rb, object so|co
+(BoardKind.cell), task first_order | sequence_function | optimal_function | repetition, source
+template | human | codellama | gpt4 | claude; ablations end in _examples_<k> or _without_<section>.
+In-context examples always come from the generated dataset's train split (the published data has
+no simple-board train split). game_id counts from 0 in each experiment. Each experiment and the file
+record the dataset (dataset_info: version, source, seed, path) and this generator's seed.
+"""
+from __future__ import annotations
+
+import os
+from argparse import Namespace
+from pathlib import Path
+
+from sartco.clem.fresh import DEFAULT_PUBLISHED, REPO, FreshInstanceGenerator
+from sartco.clem.instruct_generator import FEEDBACK_SUFFIX
+from sartco.dataset import BOARD_KINDS, DESCRIBED_TASK, REGULAR_COMPLEX, REGULAR_SIMPLE, SIMPLE, board_kind
+from sartco.errors import UserError
+from sartco.instances.examples import MAX_EXAMPLES
+from sartco.instances.prompts import SECTIONS
+from sartco.instances.storage import load_dataset
+
+from .common import InstanceFile, dataset_info, records, write
+
+# the cells of the paper's Table 3: (board kind, task, sources from the generated data, from the published data)
+CELLS = [
+    (SIMPLE, "first_order", ["template"], []),
+    (SIMPLE, "sequence_function", ["template"], ["human"]),
+    (SIMPLE, "optimal_function", ["template"], ["human", "codellama", "gpt4", "claude"]),
+    (REGULAR_SIMPLE, "repetition", ["template"], ["human", "codellama", "gpt4", "claude"]),
+    (REGULAR_COMPLEX, "repetition", ["template"], ["human"]),
+]
+
+
+def _generated(gen: InstanceFile, seed: int, dataset_dir: Path, n_examples: int):
+    """The generated dataset's files, the train pools of the in-context examples, and the
+    dataset as the file records it (the file's `dataset` until a build names another one)."""
+    manifest, files = load_dataset(dataset_dir)
+    info = gen.instances["dataset"] = dataset_info(manifest, dataset_dir, seed, n_examples)
+    return files, {kind: records(dataset_dir, files, kind, "train") for kind in BOARD_KINDS}, info
+
+
+def table3(gen: InstanceFile, seed: int, dataset_dir: Path, n_examples: int, per_experiment: int | None = None):
+    """The template cells of Table 3 (test split; per_experiment: the first N episodes of each)."""
+    gen.source = dataset_dir
+    files, pools, info = _generated(gen, seed, dataset_dir, n_examples)
+    for kind, task, sources, _ in CELLS:
+        for source in sources:
+            exp = gen.experiment(f"{kind.cell}_{task}_{source}", kind, task, source, "test", info)
+            items = records(dataset_dir, files, kind, "test")[:per_experiment]
+            gen.add_episodes(exp, items, task, source, pools[kind], seed, n_examples)
+
+
+def ablations(gen: InstanceFile, seed: int, dataset_dir: Path, n_examples: int, episodes: int):
+    """Every template cell on the first `episodes` val boards: 0..MAX_EXAMPLES examples, and each
+    prompt section left out."""
+    gen.source = dataset_dir
+    files, pools, info = _generated(gen, seed, dataset_dir, n_examples)
+    for kind, task, _, _ in CELLS:
+        val = records(dataset_dir, files, kind, "val")[:episodes]
+        for k in range(MAX_EXAMPLES + 1):
+            exp = gen.experiment(f"{kind.cell}_{task}_template_examples_{k}", kind, task, "template", "val",
+                                 info, {"kind": "examples", "value": k})
+            gen.add_episodes(exp, val, task, "template", pools[kind], seed, k)
+        for section in SECTIONS:
+            kept = tuple(s for s in SECTIONS if s != section)
+            exp = gen.experiment(f"{kind.cell}_{task}_template_without_{section}", kind, task, "template",
+                                 "val", info, {"kind": "without", "value": section})
+            gen.add_episodes(exp, val, task, "template", pools[kind], seed, n_examples, kept)
+
+
+def train(gen: InstanceFile, seed: int, dataset_dir: Path, n_examples: int, episodes: int):
+    """Every template cell on the first `episodes` train boards (0: all)."""
+    gen.source = dataset_dir
+    _, pools, info = _generated(gen, seed, dataset_dir, n_examples)
+    for kind, task, _, _ in CELLS:
+        exp = gen.experiment(f"{kind.cell}_{task}_template_train", kind, task, "template", "train", info)
+        gen.add_episodes(exp, pools[kind][:episodes or None], task, "template", pools[kind], seed, n_examples)
+
+
+def published(gen: InstanceFile, seed: int, dataset_dir: Path, n_examples: int, published_dir: Path):
+    """The human- and model-written cells of Table 3 from the imported published data."""
+    gen.source = published_dir
+    _, pools, info = _generated(gen, seed, dataset_dir, n_examples)
+    pub_manifest, pub_files = load_dataset(published_dir)
+    pub_info = gen.instances["dataset"] = dataset_info(pub_manifest, published_dir, seed, n_examples,
+                                                       examples_from=info)
+    for kind, task, _, sources in CELLS:
+        for source in sources:
+            items = [r for r in records(published_dir, pub_files, kind, "test") if source in r["instructions"]]
+            exp = gen.experiment(f"{kind.cell}_{task}_{source}", kind, task, source, "test", pub_info)
+            gen.add_episodes(exp, items, task, source, pools[kind], seed, n_examples)
+
+
+def described(gen: InstanceFile, seed: int, dataset_dir: Path, n_examples: int, describers_dir: Path):
+    """One experiment per describer model (an instruction source of the manifest) and board kind,
+    named <board>_<task>_<model>, with the builder task cobot_describe gives (DESCRIBED_TASK)."""
+    gen.source = describers_dir
+    _, pools, info = _generated(gen, seed, dataset_dir, n_examples)
+    manifest, files = load_dataset(describers_dir)
+    if manifest.get("source") != "describer":
+        raise UserError(f"{describers_dir}: not a describer dataset (manifest source {manifest.get('source')!r})")
+    d_info = gen.instances["dataset"] = dataset_info(manifest, describers_dir, seed, n_examples, examples_from=info)
+    for source in manifest["config"]["instruction_sources"]:
+        for kind in BOARD_KINDS:
+            task = DESCRIBED_TASK[kind.board]
+            items = [r for r in records(describers_dir, files, kind, "test") if source in r["instructions"]]
+            if items:
+                exp = gen.experiment(f"{kind.cell}_{task}_{source}".replace("/", "_"), kind, task, source,
+                                     "test", d_info)
+                gen.add_episodes(exp, items, task, source, pools[kind], seed, n_examples)
+
+
+def paper(gen: InstanceFile, seed: int, dataset_dir: Path, published_dir: Path | None = None):
+    """The paper protocol (sartco.paper.episodes.build_episodes) on the published test files (from
+    ../shared), one experiment per Table 3 cell, paper_<cell>_<task>_<source>. seed: unused (the
+    paper's examples have their own)."""
+    from sartco.clem.paper import experiment_fields, instance_fields
+    from sartco.paper import PROTOCOL
+    from sartco.paper import episodes as paper_episodes
+
+    published_dir = gen.source = published_dir or paper_episodes.DEFAULT_PUBLISHED
+    cells: dict[tuple, list[dict]] = {}
+    for ep in paper_episodes.build_episodes(published_dir=published_dir, generated_dir=dataset_dir):
+        cells.setdefault((ep.file, ep.variant), []).append(ep.to_json())
+    gen.instances["dataset"] = {"protocol": PROTOCOL, "published": os.path.relpath(published_dir, REPO),
+                                "generated": os.path.relpath(dataset_dir, REPO)}
+    for episodes in cells.values():
+        cell = episodes[0]["cell"]
+        kind = board_kind(cell["board"], cell["object"])
+        exp = gen.add_experiment(f"{PROTOCOL}_{kind.cell}_{cell['task']}_{cell['source']}")
+        exp.update(experiment_fields(episodes[0]))
+        exp.move_to_end("game_instances")
+        for game_id, episode in enumerate(episodes):
+            gen.add_game_instance(exp, game_id).update(instance_fields(episode))
+
+
+# one function per file: (options, game folder) -> the path written
+def instances(o: Namespace, game_dir: Path) -> str:
+    return write(InstanceFile(game_dir, table3), "instances.json", o.seed, dataset_dir=o.dataset,
+                 n_examples=o.examples)
+
+
+def instances_ablations(o: Namespace, game_dir: Path) -> str:
+    return write(InstanceFile(game_dir, ablations), "instances_ablations.json", o.seed, dataset_dir=o.dataset,
+                 n_examples=o.examples, episodes=o.ablation_episodes)
+
+
+def instances_feedback(o: Namespace, game_dir: Path) -> str:
+    return write(InstanceFile(game_dir, table3, o.attempts), f"instances{FEEDBACK_SUFFIX}.json", o.seed,
+                 dataset_dir=o.dataset, n_examples=o.examples)
+
+
+def instances_smoke(o: Namespace, game_dir: Path) -> str:
+    return write(InstanceFile(game_dir, table3), "instances_smoke.json", o.seed, dataset_dir=o.dataset,
+                 n_examples=o.examples, per_experiment=o.smoke)
+
+
+def instances_published(o: Namespace, game_dir: Path) -> str:
+    return write(InstanceFile(game_dir, published), "instances_published.json", o.seed, dataset_dir=o.dataset,
+                 n_examples=o.examples, published_dir=o.published or DEFAULT_PUBLISHED)
+
+
+def instances_published_feedback(o: Namespace, game_dir: Path) -> str:
+    return write(InstanceFile(game_dir, published, o.attempts), f"instances_published{FEEDBACK_SUFFIX}.json",
+                 o.seed, dataset_dir=o.dataset, n_examples=o.examples, published_dir=o.published or DEFAULT_PUBLISHED)
+
+
+def instances_train(o: Namespace, game_dir: Path) -> str:
+    return write(InstanceFile(game_dir, train), "instances_train.json", o.seed, dataset_dir=o.dataset,
+                 n_examples=o.examples, episodes=o.train_episodes)
+
+
+def instances_describers(o: Namespace, game_dir: Path) -> str:
+    return write(InstanceFile(game_dir, described), "instances_describers.json", o.seed, dataset_dir=o.dataset,
+                 n_examples=o.examples, describers_dir=o.describers)
+
+
+def instances_paper(o: Namespace, game_dir: Path) -> str:
+    return write(InstanceFile(game_dir, paper), "instances_paper.json", o.seed, dataset_dir=o.dataset,
+                 published_dir=o.paper_data)
+
+
+def instances_fresh(o: Namespace, game_dir: Path) -> str:
+    return write(FreshInstanceGenerator(str(game_dir), CELLS), "instances_fresh.json", o.seed, dataset_dir=o.dataset,
+                 n_examples=o.examples, fresh_seed=o.fresh, published_dir=o.published,
+                 per_experiment=o.fresh_episodes or None)
