@@ -1,0 +1,161 @@
+"""`sartco register` and `sartco games`: make clemcore find sartco's models, backends and games in a
+folder of the user's, by writing ordinary clemcore files there (nothing patches clemcore).
+
+clemcore 3.7 reads `model_registry.json` and `<backend>_api.py` files only from the working directory
+and from its own package, and games from `game_registry.json` and the folders below the working
+directory. So, for the folder DIR you run `clem` in:
+
+    sartco register [DIR]   (default: the working directory)
+      DIR/model_registry.json  sartco's model entries (rulebased, erring: sartco/clem/backends/
+                               model_registry.json) appended to the list already there; an entry of
+                               the same model_name stays as the user wrote it (said on stderr), no
+                               entry is reordered; a second run changes nothing
+      DIR/<name>_api.py        one small file per sartco backend (rulebased, openai_batching) that
+                               imports the backend's class from the installed package
+    sartco games [DIR]      (default: the working directory)
+      DIR/games/<game>/        the game folders' files (clemgame.json, master.py, instancegenerator.py,
+                               README.md) of cobot_instruct and cobot_describe, so that instances can be
+                               generated into DIR/games/<game>/in (never into site-packages); an existing
+                               file that differs is left alone (said on stderr)
+      DIR/game_registry.json   one entry per game entry of the clemgame.json files, with its game_path,
+                               merged as model_registry.json is (by game_name)
+
+The checkout commits the result of `sartco register .` at its top (model_registry.json,
+rulebased_api.py, openai_batching_api.py), so that `make main`, `make test` and the scripts find
+them; tests/test_register.py checks that registering the checkout again changes nothing.
+"""
+from __future__ import annotations
+
+import json
+import shutil
+import sys
+from pathlib import Path
+
+from sartco.errors import UserError
+from sartco.settings import BACKENDS, GAME_FILES, GAME_NAMES, GAMES
+
+MODELS_FILE, GAMES_FILE = "model_registry.json", "game_registry.json"
+HEADER = "# written by `sartco register`: clemcore loads this file by its path; the backend is in the sartco package\n"
+
+
+def configure(parser) -> None:
+    parser.add_argument("dir", nargs="?", type=Path, default=Path("."),
+                        help="the folder you run clem in (default: the working directory)")
+    parser.add_argument("-q", "--quiet", action="store_true", help="print nothing when nothing changed")
+
+
+def read_list(path: Path) -> list:
+    """A registry file's entries ([] when there is none); a UserError naming the file when it is not
+    a JSON list of objects."""
+    if not path.exists():
+        return []
+    try:
+        entries = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
+        raise UserError(f"{path}: cannot read it as JSON ({exc}); fix or move it, nothing was written") from None
+    if not isinstance(entries, list) or not all(isinstance(e, dict) for e in entries):
+        raise UserError(f"{path}: expected a JSON list of entries (objects); fix or move it, nothing was written")
+    return entries
+
+
+def merge(path: Path, ours: list[dict], key: str) -> tuple[list[str], list[str]]:
+    """Append to the registry file at `path` those of `ours` whose `key` it does not hold yet (the file's
+    own entries first, unchanged and in their order). (names added, names kept as the user wrote them)."""
+    entries = read_list(path)
+    present = {e.get(key): e for e in entries}
+    added = [e for e in ours if e[key] not in present]
+    kept = [e[key] for e in ours if e[key] in present and present[e[key]] != e]
+    if added:
+        path.write_text(json.dumps(entries + added, indent=2) + "\n", encoding="utf-8")
+    return [e[key] for e in added], kept
+
+
+def backend_files() -> dict[str, str]:
+    """file name -> the text `sartco register` writes, for every sartco backend."""
+    return {p.name: HEADER + p.read_text(encoding="utf-8") for p in sorted(BACKENDS.glob("*_api.py"))}
+
+
+def model_entries() -> list[dict]:
+    return json.loads((BACKENDS / MODELS_FILE).read_text(encoding="utf-8"))
+
+
+def write_new(path: Path, text: str) -> str | None:
+    """Write `text` to a file that is not there ("written"); an equal file: None; another: "kept"."""
+    if path.exists():
+        return None if path.read_text(encoding="utf-8") == text else "kept"
+    path.write_text(text, encoding="utf-8")
+    return "written"
+
+
+def register(folder: Path) -> list[str]:
+    """Register sartco's backends and models in `folder`; the lines saying what changed."""
+    folder = _folder(folder)
+    read_list(folder / MODELS_FILE)  # a malformed file stops everything before anything is written
+    lines = write_backends(folder)
+    added, kept = merge(folder / MODELS_FILE, model_entries(), "model_name")
+    if added:
+        lines.append(f"{folder / MODELS_FILE}: added {', '.join(added)}")
+    for name in kept:
+        print(f"sartco register: {folder / MODELS_FILE} has its own entry '{name}': kept", file=sys.stderr)
+    return lines
+
+
+def write_backends(folder: Path) -> list[str]:
+    """sartco's <name>_api.py files in `folder` (a file there that differs is kept)."""
+    lines = []
+    for name, text in backend_files().items():
+        done = write_new(folder / name, text)
+        if done == "written":
+            lines.append(f"{folder / name}: written")
+        elif done == "kept":
+            print(f"sartco register: {folder / name} exists and differs: kept (yours wins)", file=sys.stderr)
+    return lines
+
+
+def install_games(folder: Path) -> list[str]:
+    """Copy the games' files to folder/games/<game>/ and register them in folder/game_registry.json."""
+    folder = _folder(folder)
+    read_list(folder / GAMES_FILE)
+    lines, entries = [], []
+    for game in GAME_NAMES:
+        source, target = GAMES / game, folder / "games" / game
+        (target / "in").mkdir(parents=True, exist_ok=True)
+        for name in GAME_FILES:
+            done = write_new(target / name, (source / name).read_text(encoding="utf-8"))
+            if done == "written":
+                lines.append(f"{target / name}: written")
+            elif done == "kept":
+                print(f"sartco games: {target / name} exists and differs: kept", file=sys.stderr)
+        spec = json.loads((target / "clemgame.json").read_text(encoding="utf-8"))
+        entries += [dict(entry, game_path=str(target.resolve())) for entry in (spec if isinstance(spec, list) else [spec])]
+    added, kept = merge(folder / GAMES_FILE, entries, "game_name")
+    if added:
+        lines.append(f"{folder / GAMES_FILE}: added {', '.join(added)}")
+    for name in kept:
+        print(f"sartco games: {folder / GAMES_FILE} has its own entry '{name}': kept", file=sys.stderr)
+    return lines
+
+
+def _folder(folder: Path) -> Path:
+    folder = Path(folder)
+    if not folder.is_dir():
+        raise UserError(f"{folder}: not a folder")
+    return folder
+
+
+def run(args) -> int:
+    lines = register(args.dir)
+    for line in lines:
+        print(line)
+    if not lines and not args.quiet:
+        print(f"{args.dir}: sartco's models and backends already registered")
+    return 0
+
+
+def run_games(args) -> int:
+    lines = install_games(args.dir)
+    for line in lines:
+        print(line)
+    if not lines and not args.quiet:
+        print(f"{args.dir}: sartco's games already there")
+    return 0
