@@ -1,6 +1,6 @@
 """The `sartco` command. Each subcommand lives in its own module, imported only when chosen,
 so that `sartco execute` starts fast. A module exposes `configure(parser)` and `run(args) -> int`
-(or the function named after a colon in COMMANDS).
+(`module:x` in COMMANDS: configure_x and run_x).
 """
 from __future__ import annotations
 
@@ -26,7 +26,7 @@ COMMANDS = {
     "score-responses": ("sartco.protocols.score", "score raw answers (JSON lines) in a protocol (paper or sartco)"),
     "bench-run": ("sartco.clem.benchrun", "clem run against a stub model server: sequential vs the batching backend"),
     "register": ("sartco.register", "write sartco's models and backends into a folder's clemcore files (model_registry.json)"),
-    "games": ("sartco.register:run_games", "copy the games into DIR/games and register them in DIR/game_registry.json"),
+    "games": ("sartco.register:games", "copy the games into DIR and register them in ./game_registry.json"),
 }
 
 
@@ -45,13 +45,13 @@ def main(argv: list[str] | None = None) -> int:
     for name, (module, help_text) in COMMANDS.items():
         p = sub.add_parser(name, help=help_text, description=help_text)
         if name == chosen:
-            module, _, function = module.partition(":")
-            modules[name] = importlib.import_module(module), function or "run"
-            modules[name][0].configure(p)
+            module, _, suffix = module.partition(":")
+            modules[name] = importlib.import_module(module), f"_{suffix}" if suffix else ""
+            getattr(modules[name][0], "configure" + modules[name][1])(p)
     args = parser.parse_args(argv)
     try:
-        module, function = modules[args.command]
-        return int(getattr(module, function)(args) or 0)
+        module, suffix = modules[args.command]
+        return int(getattr(module, "run" + suffix)(args) or 0)
     except UserError as exc:
         print(f"sartco {args.command}: {exc}", file=sys.stderr)
         return 2

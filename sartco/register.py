@@ -12,13 +12,16 @@ directory. So, for the folder DIR you run `clem` in:
                                entry is reordered; a second run changes nothing
       DIR/<name>_api.py        one small file per sartco backend (rulebased, openai_batching) that
                                imports the backend's class from the installed package
-    sartco games [DIR]      (default: the working directory)
-      DIR/games/<game>/        the game folders' files (clemgame.json, master.py, instancegenerator.py,
+    sartco games GAMES_DIR  (run it in the folder you run clem in)
+      GAMES_DIR/<game>/        the game folders' files (clemgame.json, master.py, instancegenerator.py,
                                README.md) of cobot_instruct and cobot_describe, so that instances can be
-                               generated into DIR/games/<game>/in (never into site-packages); an existing
+                               generated into GAMES_DIR/<game>/in (never into site-packages); an existing
                                file that differs is left alone (said on stderr)
-      DIR/game_registry.json   one entry per game entry of the clemgame.json files, with its game_path,
-                               merged as model_registry.json is (by game_name)
+      ./game_registry.json     one entry per game entry of the clemgame.json files, with its game_path,
+                               merged as model_registry.json is (by game_name). clem also finds every
+                               game folder below the working directory by itself, so a GAMES_DIR there
+                               would list each game twice (`clem run -g all` would play it twice): it is
+                               refused; put the games beside it (e.g. ../sartco-games)
 
 The checkout commits the result of `sartco register .` at its top (model_registry.json,
 rulebased_api.py, openai_batching_api.py), so that `make main`, `make test` and the scripts find
@@ -41,6 +44,11 @@ HEADER = "# written by `sartco register`: clemcore loads this file by its path; 
 def configure(parser) -> None:
     parser.add_argument("dir", nargs="?", type=Path, default=Path("."),
                         help="the folder you run clem in (default: the working directory)")
+    parser.add_argument("-q", "--quiet", action="store_true", help="print nothing when nothing changed")
+
+
+def configure_games(parser) -> None:
+    parser.add_argument("dir", type=Path, help="where the game folders go (outside the working directory)")
     parser.add_argument("-q", "--quiet", action="store_true", help="print nothing when nothing changed")
 
 
@@ -112,13 +120,16 @@ def write_backends(folder: Path) -> list[str]:
     return lines
 
 
-def install_games(folder: Path) -> list[str]:
-    """Copy the games' files to folder/games/<game>/ and register them in folder/game_registry.json."""
-    folder = _folder(folder)
-    read_list(folder / GAMES_FILE)
+def install_games(games_dir: Path, registry_dir: Path) -> list[str]:
+    """Copy the games' files to games_dir/<game>/ and register them in registry_dir/game_registry.json."""
+    registry_dir, games_dir = _folder(registry_dir).resolve(), Path(games_dir).resolve()
+    if games_dir.is_relative_to(registry_dir):
+        raise UserError(f"{games_dir}: inside {registry_dir}, where clem finds the games by itself and would list "
+                        f"each twice beside {GAMES_FILE}; give a folder outside it (e.g. ../sartco-games)")
+    read_list(registry_dir / GAMES_FILE)
     lines, entries = [], []
     for game in GAME_NAMES:
-        source, target = GAMES / game, folder / "games" / game
+        source, target = GAMES / game, games_dir / game
         (target / "in").mkdir(parents=True, exist_ok=True)
         for name in GAME_FILES:
             done = write_new(target / name, (source / name).read_text(encoding="utf-8"))
@@ -128,11 +139,11 @@ def install_games(folder: Path) -> list[str]:
                 print(f"sartco games: {target / name} exists and differs: kept", file=sys.stderr)
         spec = json.loads((target / "clemgame.json").read_text(encoding="utf-8"))
         entries += [dict(entry, game_path=str(target.resolve())) for entry in (spec if isinstance(spec, list) else [spec])]
-    added, kept = merge(folder / GAMES_FILE, entries, "game_name")
+    added, kept = merge(registry_dir / GAMES_FILE, entries, "game_name")
     if added:
-        lines.append(f"{folder / GAMES_FILE}: added {', '.join(added)}")
+        lines.append(f"{registry_dir / GAMES_FILE}: added {', '.join(added)}")
     for name in kept:
-        print(f"sartco games: {folder / GAMES_FILE} has its own entry '{name}': kept", file=sys.stderr)
+        print(f"sartco games: {registry_dir / GAMES_FILE} has its own entry '{name}': kept", file=sys.stderr)
     return lines
 
 
@@ -153,7 +164,7 @@ def run(args) -> int:
 
 
 def run_games(args) -> int:
-    lines = install_games(args.dir)
+    lines = install_games(args.dir, Path.cwd())
     for line in lines:
         print(line)
     if not lines and not args.quiet:
