@@ -8,6 +8,7 @@ import argparse
 import importlib
 import os
 import sys
+from pathlib import Path
 
 from sartco.errors import UserError
 
@@ -32,13 +33,18 @@ COMMANDS = {
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="sartco", description=__doc__.splitlines()[0])
-    parser.add_argument("--data", metavar="DIR", default=None,
+    parser.add_argument("--data", metavar="DIR", default=None, dest="data_folder",
                         help="the SARTCo data folder (published/, gold_boards/, paper-protocol/); sets $SARTCO_DATA "
                              "for this command (default: $SARTCO_DATA, else ../shared/sartco-data beside the checkout)")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
     argv = sys.argv[1:] if argv is None else argv
     data, rest = _data_option(argv)
     if data is not None:  # before any module reads sartco.settings (it resolves the data folder once)
+        known = sys.modules.get("sartco.settings")
+        if known is not None and known.DATA != Path(data).expanduser().resolve():
+            print(f"sartco: --data {data}: this process already uses the data folder {known.DATA} "
+                  f"(give --data, or $SARTCO_DATA, when the process starts)", file=sys.stderr)
+            return 2
         os.environ["SARTCO_DATA"] = data
     chosen = next((a for a in rest if not a.startswith("-")), None)
     modules = {}
