@@ -30,7 +30,6 @@ them; tests/test_register.py checks that registering the checkout again changes 
 from __future__ import annotations
 
 import json
-import shutil
 import sys
 from pathlib import Path
 
@@ -87,12 +86,23 @@ def model_entries() -> list[dict]:
     return json.loads((BACKENDS / MODELS_FILE).read_text(encoding="utf-8"))
 
 
-def write_new(path: Path, text: str) -> str | None:
-    """Write `text` to a file that is not there ("written"); an equal file: None; another: "kept"."""
-    if path.exists():
-        return None if path.read_text(encoding="utf-8") == text else "kept"
-    path.write_text(text, encoding="utf-8")
-    return "written"
+def write_new(path: Path, text: str, command: str, lines: list[str]) -> None:
+    """Write a file that is not there; an equal file stays; another one too, said on stderr."""
+    if not path.exists():
+        path.write_text(text, encoding="utf-8")
+        lines.append(f"{path}: written")
+    elif path.read_text(encoding="utf-8") != text:
+        print(f"sartco {command}: {path} exists and differs: kept (delete it to take this version's)",
+              file=sys.stderr)
+
+
+def merge_into(path: Path, ours: list[dict], key: str, command: str, lines: list[str]) -> None:
+    """merge(), said: the names added on stdout (lines), the user's entries kept on stderr."""
+    added, kept = merge(path, ours, key)
+    if added:
+        lines.append(f"{path}: added {', '.join(added)}")
+    for name in kept:
+        print(f"sartco {command}: {path} has its own entry '{name}': kept", file=sys.stderr)
 
 
 def register(folder: Path) -> list[str]:
@@ -100,23 +110,15 @@ def register(folder: Path) -> list[str]:
     folder = _folder(folder)
     read_list(folder / MODELS_FILE)  # a malformed file stops everything before anything is written
     lines = write_backends(folder)
-    added, kept = merge(folder / MODELS_FILE, model_entries(), "model_name")
-    if added:
-        lines.append(f"{folder / MODELS_FILE}: added {', '.join(added)}")
-    for name in kept:
-        print(f"sartco register: {folder / MODELS_FILE} has its own entry '{name}': kept", file=sys.stderr)
+    merge_into(folder / MODELS_FILE, model_entries(), "model_name", "register", lines)
     return lines
 
 
 def write_backends(folder: Path) -> list[str]:
     """sartco's <name>_api.py files in `folder` (a file there that differs is kept)."""
-    lines = []
+    lines: list[str] = []
     for name, text in backend_files().items():
-        done = write_new(folder / name, text)
-        if done == "written":
-            lines.append(f"{folder / name}: written")
-        elif done == "kept":
-            print(f"sartco register: {folder / name} exists and differs: kept (yours wins)", file=sys.stderr)
+        write_new(folder / name, text, "register", lines)
     return lines
 
 
@@ -127,23 +129,16 @@ def install_games(games_dir: Path, registry_dir: Path) -> list[str]:
         raise UserError(f"{games_dir}: inside {registry_dir}, where clem finds the games by itself and would list "
                         f"each twice beside {GAMES_FILE}; give a folder outside it (e.g. ../sartco-games)")
     read_list(registry_dir / GAMES_FILE)
-    lines, entries = [], []
+    lines: list[str] = []
+    entries = []
     for game in GAME_NAMES:
         source, target = GAMES / game, games_dir / game
         (target / "in").mkdir(parents=True, exist_ok=True)
         for name in GAME_FILES:
-            done = write_new(target / name, (source / name).read_text(encoding="utf-8"))
-            if done == "written":
-                lines.append(f"{target / name}: written")
-            elif done == "kept":
-                print(f"sartco games: {target / name} exists and differs: kept", file=sys.stderr)
+            write_new(target / name, (source / name).read_text(encoding="utf-8"), "games", lines)
         spec = json.loads((target / "clemgame.json").read_text(encoding="utf-8"))
-        entries += [dict(entry, game_path=str(target.resolve())) for entry in (spec if isinstance(spec, list) else [spec])]
-    added, kept = merge(registry_dir / GAMES_FILE, entries, "game_name")
-    if added:
-        lines.append(f"{registry_dir / GAMES_FILE}: added {', '.join(added)}")
-    for name in kept:
-        print(f"sartco games: {registry_dir / GAMES_FILE} has its own entry '{name}': kept", file=sys.stderr)
+        entries += [dict(entry, game_path=str(target)) for entry in (spec if isinstance(spec, list) else [spec])]
+    merge_into(registry_dir / GAMES_FILE, entries, "game_name", "games", lines)
     return lines
 
 
