@@ -3,8 +3,8 @@ temporary folder, used from a folder that is not the checkout (PYTHONPATH unset)
 dataset and the instances of both games, plays a smoke run of cobot_instruct and cobot_describe
 with mock and rulebased through a game_registry.json there, and scores, transcribes and reports.
 
-Slow: building the wheel takes about 10 s, installing it with its dependencies into the fresh venv
-1 to 4 minutes (pip's cache decides), generating and playing about 2 minutes."""
+Slow: 5.5 to 7 minutes on 2 shared cores (building the wheel about 10 s, installing it with its
+dependencies into the fresh venv about 3 minutes, generating, playing and reporting 2 to 4)."""
 from __future__ import annotations
 
 import json
