@@ -1,50 +1,39 @@
-"""Everything is declared in pyproject.toml; this file only ships sartco_clemcore.pth at the top
-of site-packages, in wheels and in editable installs (pip install -e), so that clemcore finds the
-backends and models that come with sartco (sartco/clem/packaged.py explains the mechanism)."""
+"""Everything is declared in pyproject.toml; this file only copies what the package needs at run
+time from the checkout into a wheel (sartco.settings reads them from the checkout in an editable
+install): resources/ (generation templates and configs) as sartco/resources/, and the game
+folders' files (clemgame.json, master.py, instancegenerator.py, README.md; not their instances) as
+sartco/games/<game>/, which `sartco games DIR` copies to a folder of the user's."""
+import sys
 from pathlib import Path
 
 from setuptools import setup
 from setuptools.command.build_py import build_py
-from setuptools.command.editable_wheel import editable_wheel
 
-PTH = "sartco_clemcore.pth"
 HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+from sartco.settings import GAME_FILES, GAME_NAMES  # noqa: E402  (the one list of what ships)
 
 
-class build_py_with_pth(build_py):
-    """A wheel: the .pth beside the packages (the top of site-packages once installed)."""
+def shipped() -> list[tuple[Path, str]]:
+    """(file in the checkout, its path inside the package)."""
+    files = [(path, str(Path("resources") / path.relative_to(HERE / "resources")))
+             for path in sorted((HERE / "resources").rglob("*")) if path.is_file() and "__pycache__" not in path.parts]
+    files += [(HERE / "games" / game / name, str(Path("games") / game / name)) for game in GAME_NAMES for name in GAME_FILES]
+    return files
 
+
+class build_py_with_data(build_py):
     def run(self):
         super().run()
         if not self.editable_mode:
-            self.copy_file(str(HERE / PTH), str(Path(self.build_lib) / PTH), preserve_mode=False)
+            for source, inside in shipped():
+                target = Path(self.build_lib) / "sartco" / inside
+                self.mkpath(str(target.parent))
+                self.copy_file(str(source), str(target), preserve_mode=False)
 
     def get_outputs(self, include_bytecode=True):
-        extra = [] if self.editable_mode else [str(Path(self.build_lib) / PTH)]
+        extra = [] if self.editable_mode else [str(Path(self.build_lib) / "sartco" / inside) for _, inside in shipped()]
         return super().get_outputs(include_bytecode) + extra
 
 
-class _WithPth:
-    """An editable install's wheel holds only setuptools' finder: add the .pth to it."""
-
-    def __init__(self, strategy):
-        self.strategy = strategy
-
-    def __call__(self, wheel, files, mapping):
-        self.strategy(wheel, files, mapping)
-        wheel.writestr(PTH, (HERE / PTH).read_bytes())
-
-    def __enter__(self):
-        self.strategy.__enter__()
-        return self
-
-    def __exit__(self, *exc):
-        return self.strategy.__exit__(*exc)
-
-
-class editable_wheel_with_pth(editable_wheel):
-    def _select_strategy(self, *args, **kwargs):
-        return _WithPth(super()._select_strategy(*args, **kwargs))
-
-
-setup(cmdclass={"build_py": build_py_with_pth, "editable_wheel": editable_wheel_with_pth})
+setup(cmdclass={"build_py": build_py_with_data})

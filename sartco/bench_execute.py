@@ -35,6 +35,7 @@ from sartco.errors import UserError
 from sartco.program import pool
 from sartco.program.pool import default_workers, execute_many, shutdown
 from sartco.program.serve import serve
+from sartco.published.files import require_data
 from sartco.published.gold import gold_programs
 
 
@@ -87,6 +88,7 @@ def _payload(programs) -> bytes:
 
 
 def run(args) -> int:
+    require_data(args.data / "published")
     if not (args.data / "published").is_dir():
         raise UserError(f"{args.data}/published: no such folder (give --data)")
     programs = list(gold_programs(args.data))

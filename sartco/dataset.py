@@ -1,5 +1,5 @@
-"""The dataset's nouns, in one place and free of dependencies (the bottom layer: it imports nothing
-from sartco, so every layer may use it).
+"""The dataset's nouns, in one place and free of dependencies (the bottom layer: it imports only
+sartco.settings, for the data folder, so every layer may use it).
 
 A board kind is a board type with an object type. Each kind has one spelling per use:
 
@@ -21,11 +21,12 @@ instructions. A dataset file is a list of `BoardRecord`s (`RECORD_KEYS` their ke
 from __future__ import annotations
 
 import re
-from pathlib import Path
 from typing import Any, NamedTuple, TypedDict
 
-# the shared data (published files, gold boards, paper protocol) beside the repository, read where it lies
-SHARED_DATA = Path(__file__).resolve().parents[1].parent / "shared" / "sartco-data"
+from sartco.settings import data_path
+
+# the shared data (published files, gold boards, paper protocol), read where it lies (sartco.settings.DATA)
+SHARED_DATA = data_path()
 
 SPLITS = ("train", "val", "test")
 BOARD_TYPES = ("simple", "regular")

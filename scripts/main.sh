@@ -21,15 +21,15 @@
 #                             repairs, questions and corrections give the repair and dialogue tables
 #                             real recovery curves (about 4 min: play 1, score+transcribe 1, eval 2)
 # Settings (environment): RESULTS (results), MODELS ("mock rulebased"), ERRING ("erring"; "" skips
-# it), SCORES (scores).
+# it), SCORES (scores), SARTCO_DATA (the SARTCo data folder; ../shared/sartco-data).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 RESULTS="${RESULTS:-results}"
 MODELS="${MODELS:-mock rulebased}"
 ERRING="${ERRING-erring}"
 SCORES="${SCORES:-scores}"
-SHARED="../shared/sartco-data/published"
-test -d "$SHARED" || { echo "make main needs the published SARTCo data at $SHARED" >&2; exit 2; }
+SHARED="${SARTCO_DATA:-../shared/sartco-data}/published"   # the data folder: sartco.settings
+test -d "$SHARED" || { echo "make main needs the published SARTCo data at $SHARED (set SARTCO_DATA to the data folder)" >&2; exit 2; }
 
 mkdir -p "$RESULTS"
 LOG="$RESULTS/main.log"   # clemcore's progress bars and logs go here; the terminal gets the steps

@@ -20,8 +20,8 @@ live inside a game folder). Reuse these from any game whose player writes code:
 - rulebased.RulebasedBackend           `-m rulebased` (the rule-based follower as a model) and
                                        `-m erring` (erring, erring_dialogue: the same players with
                                        seeded mistakes and repairs)
-- packaged                             the backends and model entries in clem/backends/ that
-                                       clemcore finds wherever sartco is installed
+- backends/                            the backend files and model entries that `sartco register DIR`
+                                       writes into DIR, where clemcore finds them (sartco.register)
 - benchmark.BuildBenchmark             the GameBenchmark base; checks the instance file up front
                                        against the game's episode type (json_fields, sartco.episode)
 - episodes.board_fields / instruct_episode   the episode fields the generators write

@@ -22,8 +22,8 @@ Registry entry (model_registry.json; key.json's `openai_compatible` entry gives 
   {"model_name": "my-model", "model_id": "<id the server knows>", "backend": "openai_batching",
    "model_config": {"concurrency": 16, "retries": 5, "backoff": 1.0, "timeout": 120, "retry_budget": 600,
                     "cache": "cache/my-model"}}
-clemcore finds the backend wherever sartco is installed: sartco/clem/backends/openai_batching_api.py
-(sartco.clem.packaged).
+clemcore finds the backend where `sartco register DIR` wrote DIR/openai_batching_api.py (a copy of
+sartco/clem/backends/openai_batching_api.py; sartco.register).
 """
 from __future__ import annotations
 

@@ -29,11 +29,13 @@ import time
 from pathlib import Path
 
 from sartco.errors import UserError
+from sartco.register import write_backends
+from sartco.settings import workspace
 
 from .stub_server import StubServer, answer_table
 
 GAME = "cobot_instruct"
-GAME_DIR = Path(__file__).resolve().parents[2] / "games" / GAME
+GAME_DIR = workspace() / "games" / GAME
 DEFAULT_EXPERIMENTS = "sb_so_optimal_function_template,rb_so_repetition_template,rb_co_repetition_template"
 MODEL = "stub"
 
@@ -66,9 +68,10 @@ def select_instances(experiments: list[str], episodes: int) -> dict:
 
 
 def write_scratch(folder: Path, base_url: str, backend: str, concurrency: int) -> None:
-    """key.json and model_registry.json (the model `stub` on `backend`; the backend itself is packaged,
-    sartco.clem.packaged), in `folder` (the cwd of clem). Both runs name the model `stub`, so their files can be compared."""
+    """key.json, model_registry.json (the model `stub` on `backend`) and sartco's backend files
+    (sartco.register), in `folder` (the cwd of clem). Both runs name the model `stub`, so their files can be compared."""
     folder.mkdir(parents=True, exist_ok=True)
+    write_backends(folder)
     (folder / "key.json").write_text(json.dumps({"openai_compatible": {"api_key": "none", "base_url": base_url}}))
     entry = {"model_name": MODEL, "model_id": MODEL, "backend": backend, "release_date": None, "open_weight": True,
              "parameters": "0", "languages": ["en"], "context_size": "n/a", "license": {"name": "none", "url": ""},
@@ -77,7 +80,7 @@ def write_scratch(folder: Path, base_url: str, backend: str, concurrency: int) -
 
 
 def clem(args: list[str], cwd: Path) -> float:
-    """Run a clem command in `cwd` (games from this repository); its wall time in seconds."""
+    """Run a clem command in `cwd` (games from the workspace, sartco.settings); its wall time in seconds."""
     env = dict(os.environ, CLEMBENCH_HOME=str(GAME_DIR.parents[1]))
     clem_bin = Path(sys.executable).parent / "clem"
     start = time.monotonic()

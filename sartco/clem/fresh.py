@@ -14,18 +14,17 @@ have no human- or model-written instructions.
 """
 from __future__ import annotations
 
-import os
 from pathlib import Path
 
 from sartco.errors import UserError
 from sartco.instances.config import parse_config
 from sartco.instances.fresh import board_keys, fresh_boards
 from sartco.instances.storage import load_dataset
+from sartco.settings import shown, workspace
 
 from .instruct_generator import InstructGenerator
 
-REPO = Path(__file__).resolve().parents[2]
-DEFAULT_PUBLISHED = REPO / "instances" / "published"   # `sartco import ../shared/sartco-data/published --out ...`
+DEFAULT_PUBLISHED = workspace() / "instances" / "published"   # `sartco import ../shared/sartco-data/published --out ...`
 SOURCE = "template"
 
 
@@ -49,7 +48,7 @@ class FreshInstanceGenerator(InstructGenerator):
                             f"of a dataset written by `sartco generate`)")
         config = parse_config(manifest["config"], str(dataset_dir / "manifest.json"))
         fresh, report = fresh_boards(config, fresh_seed, pub_files, board_keys(pub_files, files))
-        where = {"published": os.path.relpath(published_dir, REPO), "generated": os.path.relpath(dataset_dir, REPO)}
+        where = {"published": shown(published_dir), "generated": shown(dataset_dir)}
         self.instances["dataset"] = {**where, "fresh_seed": fresh_seed, "generator_seed": seed,
                                      "n_examples": n_examples}
         for kind, task, *_ in self.cells:

@@ -5,7 +5,8 @@ Written by the game itself (sartco.clem.benchmark.BuildBenchmark) under `clem ru
 it so) and again when clemcore closes the game. One `sessions` entry per invocation into the same
 folder (a first run, its resumes), each with:
   start, end                 ISO times of the invocation
-  instance_file              {path (relative to the repository when inside it), name, sha256}
+  instance_file              {path (relative to the workspace when inside it:
+                             sartco.settings), name, sha256}
   experiment                 the `-e` experiment or null (all experiments of the file)
   models                     clemcore's model entries, without secrets (keys named like key,
                              token, secret, password, auth are left out)
@@ -29,11 +30,12 @@ from datetime import datetime, timezone
 from importlib import metadata
 from pathlib import Path
 
+from sartco.settings import CHECKOUT, workspace
+
 RUN_FILE = "run.json"
 # set by `sartco resume` (sartco.clem.resume) while it plays: (results folder, episodes selected);
 # the game then records a session with resume = true
 RESUMING: tuple[Path, int] | None = None
-REPO = Path(__file__).resolve().parents[2]
 SECRET = re.compile(r"key|token|secret|password|passwd|auth|credential", re.IGNORECASE)
 
 
@@ -62,13 +64,16 @@ def _version(package: str) -> str | None:
 
 
 def git_commit() -> str | None:
-    """HEAD of the repository this package runs from (+ "-dirty" with uncommitted changes), or None."""
+    """HEAD of the checkout this package runs from (+ "-dirty" with uncommitted changes), or None (a
+    wheel install: no checkout)."""
+    if CHECKOUT is None:
+        return None
     try:
-        head = subprocess.run(["git", "-C", str(REPO), "rev-parse", "HEAD"], capture_output=True, text=True,
+        head = subprocess.run(["git", "-C", str(CHECKOUT), "rev-parse", "HEAD"], capture_output=True, text=True,
                               timeout=10)
         if head.returncode != 0:
             return None
-        dirty = subprocess.run(["git", "-C", str(REPO), "status", "--porcelain", "--untracked-files=no"],
+        dirty = subprocess.run(["git", "-C", str(CHECKOUT), "status", "--porcelain", "--untracked-files=no"],
                                capture_output=True, text=True, timeout=10).stdout.strip()
         return head.stdout.strip() + ("-dirty" if dirty else "")
     except (OSError, subprocess.SubprocessError):
@@ -77,7 +82,8 @@ def git_commit() -> str | None:
 
 def instance_file_info(path: Path) -> dict:
     path = Path(path).resolve()
-    shown = path.relative_to(REPO) if path.is_relative_to(REPO) else path
+    root = workspace()
+    shown = path.relative_to(root) if path.is_relative_to(root) else path
     return {"path": str(shown), "name": path.stem, "sha256": sha256_of(path)}
 
 
@@ -156,9 +162,9 @@ class RunRecorder:
 
 
 def game_entries() -> dict[str, Path]:
-    """game name -> its default instance file, for every entry of the repository's games/*/clemgame.json."""
+    """game name -> its default instance file, for every entry of the workspace's games/*/clemgame.json (sartco.settings)."""
     found = {}
-    for spec_file in sorted((REPO / "games").glob("*/clemgame.json")):
+    for spec_file in sorted((workspace() / "games").glob("*/clemgame.json")):
         entries = json.loads(spec_file.read_text(encoding="utf-8"))
         for entry in entries if isinstance(entries, list) else [entries]:
             name = entry.get("instances") or "instances"
@@ -183,7 +189,7 @@ def played_instance_file(game_dir: Path, run: dict | None = None) -> tuple[Path,
         raise ProvenanceError(f"{game_dir}: refusing to merge runs played from different instance files ({listing})")
     recorded = run["instance_file"]
     path = Path(recorded["path"])
-    path = path if path.is_absolute() else REPO / path
+    path = path if path.is_absolute() else workspace() / path
     if not path.is_file():
         raise ProvenanceError(f"{game_dir}: its instance file {recorded['path']} (run.json) no longer exists")
     if sha256_of(path) != recorded["sha256"]:

@@ -1,7 +1,7 @@
 """The clemcore backend that makes the rule-based follower selectable as a model: `clem run -g
-cobot_instruct -m rulebased`. Registered wherever sartco is installed by the packaged entry
-{"model_name": "rulebased", "backend": "rulebased"} and backend file in sartco/clem/backends
-(sartco.clem.packaged), beside the user's own model_registry.json.
+cobot_instruct -m rulebased`. `sartco register DIR` (sartco.register) writes its entry
+{"model_name": "rulebased", "backend": "rulebased"} and backend file (sartco/clem/backends) into DIR,
+beside the user's own entries in DIR/model_registry.json.
 
 The model is a CustomResponseModel, so clemcore's Player answers from the player's answer source,
 chosen by this model name when the player is made (sartco.clem.answers.instruct_answers: the

@@ -183,7 +183,8 @@ def write_dataset(config: Config, seed: int, out: str | Path) -> dict[str, int]:
 
 
 def configure(parser) -> None:
-    parser.add_argument("--config", required=True, help="dataset config, e.g. resources/v1.yaml")
+    parser.add_argument("--config", default=None,
+                        help="dataset config, e.g. resources/v1.yaml (default: v1.yaml of sartco.settings' resources)")
     parser.add_argument("--seed", type=int, required=True, help="random seed (same seed, same files)")
     parser.add_argument("--out", required=True, help="output folder, e.g. instances/v1")
     parser.add_argument("--check", action="store_true",

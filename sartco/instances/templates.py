@@ -5,19 +5,19 @@ never renders a blank. `keep_trailing_newline=True`: what a template file ends w
 """
 from __future__ import annotations
 
-import os
 from functools import lru_cache
 from pathlib import Path
 
 from jinja2 import Environment, FileSystemLoader, StrictUndefined
 
+from sartco import settings
+
 ORDINAL_SUFFIX = {1: "st", 2: "nd", 3: "rd"}
 
 
 def resources_dir() -> Path:
-    """resources/ of the repository (or $SARTCO_RESOURCES)."""
-    env = os.environ.get("SARTCO_RESOURCES")
-    return Path(env) if env else Path(__file__).resolve().parents[2] / "resources"
+    """resources/ of the checkout, or the package's copy (or $SARTCO_RESOURCES): sartco.settings."""
+    return settings.resources_dir()
 
 
 def ordinal(n: int) -> str:

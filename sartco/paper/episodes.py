@@ -37,13 +37,14 @@ from typing import Iterable
 
 from sartco.dataset import PublishedName
 from sartco.errors import UserError
+from sartco.settings import workspace
 from sartco.published.files import PUBLISHED, gold_boards, read_samples
 
 from .examples import Pools, dialogue_turns, sample_key
 from .vocabulary import INSTRUCTION_LABEL, LABELS, PROTOCOL, VARIANTS, published_test_files, template_name, variants_of
 
 DEFAULT_PUBLISHED = PUBLISHED
-DEFAULT_GENERATED = Path(__file__).resolve().parents[2] / "instances" / "v1"
+DEFAULT_GENERATED = workspace() / "instances" / "v1"
 
 
 @dataclass(frozen=True, slots=True)

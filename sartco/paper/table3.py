@@ -9,6 +9,7 @@ from pathlib import Path
 
 from sartco.dataset import SHARED_DATA
 from sartco.errors import UserError
+from sartco.published.files import require_data
 
 TABLE3 = SHARED_DATA / "paper-protocol" / "table3.json"
 CELL_KEYS = ("instructions", "board", "object", "task", "variant")
@@ -16,6 +17,7 @@ MODEL_WRITTEN = "codellama"  # the source of the paper's model-written rows
 
 
 def load_table3(path: Path = TABLE3) -> dict:
+    require_data(path)
     try:
         table = json.loads(Path(path).read_text(encoding="utf-8"))
         generation(table)

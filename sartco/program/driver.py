@@ -32,8 +32,8 @@ import threading
 import time
 from collections import deque
 from concurrent.futures import ThreadPoolExecutor
-from pathlib import Path
 
+from sartco.settings import IMPORT_ROOT
 from sartco.world import ErrorCode
 
 from .execution import MODULE, Execution, Limits
@@ -47,7 +47,7 @@ PATIENCE = 0.01  # most seconds to wait before reading more answers of a running
 START_TIMEOUT = 30.0
 PIPE_SIZE = 1 << 20  # bytes of answers a worker can write ahead of the parent
 READ_SIZE = 1 << 16  # bytes per read (a read allocates its whole size first)
-_ROOT = str(Path(__file__).resolve().parents[2])
+_ROOT = str(IMPORT_ROOT)
 ISOLATED = ("-s", "-S", "-P")  # -I without -E (see the module docstring)
 HASH_SEED = "0"
 _BOOT = (

@@ -35,11 +35,12 @@ from pathlib import Path
 from typing import Iterable
 
 from sartco.errors import UserError
+from sartco.published.files import require_data
+from sartco.settings import workspace
 from sartco.paper.vocabulary import OUR_PROTOCOL, PROTOCOL, PROTOCOLS
 from sartco.text import escape_all
 
-ROOT = Path(__file__).resolve().parents[2]
-INSTANCES_DIR = ROOT / "games" / "cobot_instruct" / "in"
+INSTANCES_DIR = workspace() / "games" / "cobot_instruct" / "in"
 INSTANCE_FILES = ("instances.json", "instances_published.json")  # the main episodes (not the feedback ones)
 
 
@@ -59,6 +60,7 @@ def paper_episodes(data: Path | None, generated: Path | None, files: Iterable[st
     from sartco.paper.episodes import DEFAULT_GENERATED, DEFAULT_PUBLISHED, build_episodes
 
     published = DEFAULT_PUBLISHED if data is None else Path(data) / "published"
+    require_data(published)
     if not published.is_dir():
         raise UserError(f"{published}: no published SARTCo files here (give the data folder with --data)")
     episodes = build_episodes(published, generated or DEFAULT_GENERATED,

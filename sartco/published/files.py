@@ -17,13 +17,22 @@ from typing import Any, Iterator
 
 from sartco.dataset import BOARD_KINDS, SHARED_DATA, SOURCES, SPLITS, PublishedName, parse_published_name
 from sartco.errors import UserError
+from sartco.settings import data_error
 
 PUBLISHED = SHARED_DATA / "published"
 GOLD_BOARDS = SHARED_DATA / "gold_boards"
 
 
+def require_data(path: Path) -> None:
+    """One line naming the data setting when `path` is in a data folder that is not there."""
+    message = data_error(path)
+    if message:
+        raise UserError(message)
+
+
 def read_json(path: Path) -> Any:
     """The JSON content of a file; a UserError naming the file when it cannot be read."""
+    require_data(path)
     try:
         text = path.read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as exc:
@@ -92,6 +101,7 @@ def gold_boards(gold_dir: Path | None, file: str) -> dict[str, Any] | None:
     None when gold_dir has none."""
     if gold_dir is None:
         return None
+    require_data(gold_dir)
     path = gold_dir / base_file(file)
     if not path.is_file():
         return None
@@ -104,6 +114,7 @@ def gold_boards(gold_dir: Path | None, file: str) -> dict[str, Any] | None:
 def discover(src: Path) -> list[tuple[Path, PublishedName]]:
     """The published files of a folder: template files first, then the variants in source order, each
     group by board kind and split. Other .json files are skipped with a line on stderr."""
+    require_data(src)
     if not src.is_dir():
         raise UserError(f"{src}: not a directory")
     found, unknown = [], []

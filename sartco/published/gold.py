@@ -20,7 +20,7 @@ from typing import Iterator, NamedTuple
 from sartco.dataset import SHARED_DATA, SIMPLE
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
 
-from .files import gold_boards, name_of, read_samples
+from .files import gold_boards, name_of, read_samples, require_data
 
 
 class GoldProgram(NamedTuple):
@@ -33,6 +33,7 @@ class GoldProgram(NamedTuple):
 
 def gold_programs(data: Path = SHARED_DATA) -> Iterator[GoldProgram]:
     data = Path(data)
+    require_data(data)
     for path in sorted((data / "published").glob("*.json")):
         boards = gold_boards(data / "gold_boards", path.name) or {}
         simple = name_of(path.name).kind.board == SIMPLE.board

@@ -12,6 +12,7 @@ ROOT = Path(__file__).resolve().parents[2]
 
 # lowest first; a module may import modules of its own rank's package and of lower ranks
 LAYERS = [
+    ("settings", ["sartco.settings"]),
     ("base", ["sartco.errors", "sartco.dataset", "sartco.episode", "sartco.text"]),
     ("world", ["sartco.world"]),
     ("program", ["sartco.program"]),
@@ -19,6 +20,7 @@ LAYERS = [
     ("published", ["sartco.published"]),
     ("scores", ["sartco.scores"]),
     ("paper", ["sartco.paper"]),
+    ("register", ["sartco.register"]),
     ("clem", ["sartco.clem"]),
     ("protocols", ["sartco.protocols"]),
     ("top", ["sartco.report", "sartco.instancegen", "sartco.cli", "sartco.__main__", "sartco.bench_execute", "games", "tools"]),

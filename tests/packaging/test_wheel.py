@@ -1,0 +1,100 @@
+"""Installable anywhere (issue 25): the wheel, installed (not editable) into a fresh venv in a
+temporary folder, used from a folder that is not the checkout (PYTHONPATH unset), generates a
+dataset and the instances of both games, plays a smoke run of cobot_instruct and cobot_describe
+with mock and rulebased through a game_registry.json there, and scores, transcribes and reports.
+
+Slow: 5.5 to 7 minutes on 2 shared cores (building the wheel about 10 s, installing it with its
+dependencies into the fresh venv about 3 minutes, generating, playing and reporting 2 to 4)."""
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+pytestmark = pytest.mark.slow
+REPO = Path(__file__).resolve().parents[2]
+
+
+def run(*args, cwd: Path, env: dict, timeout: int = 900) -> subprocess.CompletedProcess:
+    done = subprocess.run([str(a) for a in args], cwd=cwd, env=env, capture_output=True, text=True, timeout=timeout)
+    assert done.returncode == 0, f"{' '.join(map(str, args))} failed:\n{done.stdout[-2000:]}\n{done.stderr[-3000:]}"
+    return done
+
+
+@pytest.fixture(scope="module")
+def installed(tmp_path_factory):
+    """(bin folder of a fresh venv holding the wheel, an environment that knows nothing of the checkout)."""
+    root = tmp_path_factory.mktemp("wheel")
+    env = {k: v for k, v in os.environ.items()
+           if k not in ("PYTHONPATH", "VIRTUAL_ENV", "SARTCO_DATA", "SARTCO_RESOURCES", "CLEMBENCH_HOME")}
+    run(sys.executable, "-m", "pip", "wheel", "-q", "--no-deps", "-w", root / "dist", REPO, cwd=root, env=env)
+    wheels = sorted((root / "dist").glob("sartco_bench-*.whl"))
+    assert len(wheels) == 1
+    run(sys.executable, "-m", "venv", root / "venv", cwd=root, env=env)  # no --system-site-packages
+    bin_dir = root / "venv" / "bin"
+    run(bin_dir / "python", "-m", "pip", "install", "-q", wheels[0], cwd=root, env=env, timeout=1800)
+    env["PATH"] = f"{bin_dir}{os.pathsep}{env.get('PATH', '')}"
+    return bin_dir, env
+
+
+def test_the_wheel_plays_both_games_outside_the_checkout(installed, tmp_path):
+    bin_dir, env = installed
+    work, games = tmp_path / "work", tmp_path / "sartco-games"
+    work.mkdir()
+
+    where = run(bin_dir / "python", "-c", "import sartco, sartco.settings as s; print(sartco.__file__, s.CHECKOUT)",
+                cwd=work, env=env).stdout.split()
+    assert Path(where[0]).is_relative_to(bin_dir.parent) and where[1] == "None"  # the wheel's copy, no checkout
+
+    run("sartco", "games", games, cwd=work, env=env)
+    run("sartco", "register", cwd=work, env=env)
+    registry = json.loads((work / "game_registry.json").read_text())
+    assert {e["game_name"]: e["game_path"] for e in registry}["cobot_describe"] == str(games / "cobot_describe")
+    assert [e["model_name"] for e in json.loads((work / "model_registry.json").read_text())] == ["rulebased", "erring"]
+
+    run("sartco", "generate", "--seed", "42", "--out", "instances/v1", cwd=work, env=env)
+    for name in (REPO / "instances" / "v1").iterdir():  # the packaged resources give the checkout's dataset
+        assert (work / "instances" / "v1" / name.name).read_bytes() == name.read_bytes(), name.name
+    dataset = work / "instances" / "v1"
+    run("python", games / "cobot_instruct" / "instancegenerator.py", "--dataset", dataset, "--smoke", "1",
+        "--ablation-episodes", "1", cwd=work, env=env)
+    run("python", games / "cobot_describe" / "instancegenerator.py", "--dataset", dataset, "--slice", "1",
+        cwd=work, env=env)
+    smoke = json.loads((games / "cobot_instruct" / "in" / "instances_smoke.json").read_text())
+    ours = json.loads((REPO / "games" / "cobot_instruct" / "in" / "instances_smoke.json").read_text())
+    assert [e["game_instances"] for e in smoke["experiments"]] == \
+        [e["game_instances"][:1] for e in ours["experiments"]]  # the same episodes as the checkout's
+
+    assert "cobot_describe_dialogue" in run("clem", "list", "games", cwd=work, env=env).stdout
+    for model in ("mock", "rulebased"):
+        run("clem", "run", "-g", "cobot_instruct", "-m", model, "-i", "instances_smoke", "-r", "results",
+            cwd=work, env=env)
+        run("clem", "run", "-g", "cobot_describe", "-m", model, "-i", "instances_slice", "-r", "results",
+            cwd=work, env=env)
+    run("clem", "score", "-r", "results", cwd=work, env=env)
+    run("clem", "transcribe", "-r", "results", cwd=work, env=env)
+    report = run("sartco", "report", "-r", "results", "--out", "scores", cwd=work, env=env)
+    assert "16 episodes" in report.stdout
+
+    scores = {}
+    for path in sorted((work / "results").rglob("scores.json")):
+        model, game = path.relative_to(work / "results").parts[:2]
+        scores.setdefault((model, game), []).append(json.loads(path.read_text())["episode scores"]["Main Score"])
+    assert sorted(scores) == [("mock", "cobot_describe"), ("mock", "cobot_instruct"),
+                              ("rulebased", "cobot_describe"), ("rulebased", "cobot_instruct")]
+    assert scores[("mock", "cobot_instruct")] == [100.0] * 5 == scores[("rulebased", "cobot_instruct")]
+    assert scores[("mock", "cobot_describe")] == [100.0] * 3 == scores[("rulebased", "cobot_describe")]
+    assert len(list((work / "results").rglob("transcript.html"))) == 16
+    assert (work / "scores" / "table3.md").is_file() and (work / "scores" / "report.html").is_file()
+
+
+def test_the_wheel_without_a_data_folder_says_which_setting(installed, tmp_path):
+    bin_dir, env = installed
+    done = subprocess.run(["sartco", "export-prompts", "--protocol", "paper"], cwd=tmp_path, env=env,
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 2 and len(done.stderr.strip().splitlines()) == 1
+    assert "SARTCO_DATA" in done.stderr and "--data" in done.stderr
