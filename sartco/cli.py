@@ -18,11 +18,11 @@ COMMANDS = {
     "import-instructions": ("sartco.instances.describer_import", "turn describer results into a dataset"),
     "report": ("sartco.report.tables", "paper-style tables from a clemcore results folder"),
     "compare": ("sartco.report.compare", "two models on the same episodes: paired differences, McNemar test"),
-    "sample": ("sartco.clem.sampling", "N samples of every episode (clem run N times) for pass@k"),
-    "resume": ("sartco.clem.resume", "play and score exactly the missing episodes of an interrupted clem run"),
+    "sample": ("sartco.clem.tooling.sampling", "N samples of every episode (clem run N times) for pass@k"),
+    "resume": ("sartco.clem.tooling.resume", "play and score exactly the missing episodes of an interrupted clem run"),
     "export-prompts": ("sartco.protocols.export", "the prompts of a protocol's episodes (paper or sartco) as JSON lines"),
     "score-responses": ("sartco.protocols.score", "score raw answers (JSON lines) in a protocol (paper or sartco)"),
-    "bench-run": ("sartco.clem.benchrun", "clem run against a stub model server: sequential vs the batching backend"),
+    "bench-run": ("sartco.clem.tooling.benchrun", "clem run against a stub model server: sequential vs the batching backend"),
 }
 
 

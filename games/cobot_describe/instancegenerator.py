@@ -13,12 +13,12 @@ in-context examples from the dataset's train split (select_examples, seeded by -
 instruction slot is filled during the game with what the describer wrote. The instance file
 names the dataset version and seed and the generator's seed.
 
-Each board kind is played in every mode of sartco.clem.dialogue.MODES: `oneshot` (the three
+Each board kind is played in every mode of sartco.clem.describe.dialogue.MODES: `oneshot` (the three
 experiments above, named by the board kind only) in in/instances.json, the game entry
 `cobot_describe` (the paper's one-shot game: its clemscore means that alone), and `<kind>_clarify`,
 `<kind>_correct`, `<kind>_clarify_correct` (experiment fields `mode`, `questions` K = --questions,
 `corrections` R = --corrections; the same boards and prompts, the builder's prompt of a clarify
-mode ends with the paragraph on questions, sartco.clem.dialogue.clarify_note) in
+mode ends with the paragraph on questions, sartco.clem.describe.dialogue.clarify_note) in
 in/instances_dialogue.json, the entry `cobot_describe_dialogue`. Episode ids are numbered over
 both files (mode by mode, as one file would), so they are unique across the two entries.
 
@@ -32,10 +32,10 @@ import argparse
 import sys
 from pathlib import Path
 
-from sartco.clem.describer import INSTRUCTION_SLOT
-from sartco.clem.dialogue import DEFAULT_CORRECTIONS, DEFAULT_QUESTIONS, MODES, clarify_note
-from sartco.clem.episodes import board_fields
-from sartco.clem.instance_values import InstanceGenerator
+from sartco.clem.core.episodes import board_fields
+from sartco.clem.core.instance_values import InstanceGenerator
+from sartco.clem.describe.describer import INSTRUCTION_SLOT
+from sartco.clem.describe.dialogue import DEFAULT_CORRECTIONS, DEFAULT_QUESTIONS, MODES, clarify_note
 from sartco.dataset import BOARD_KINDS, DESCRIBED_TASK, BoardKind
 from sartco.episode import DescribeEpisode, DescribeExperiment
 from sartco.errors import UserError

@@ -6,9 +6,9 @@
                                                # in/instances_published.json + ..._published_feedback.json
     python games/cobot_instruct/instancegenerator.py --protocol paper   # in/instances_paper.json
     python games/cobot_instruct/instancegenerator.py --fresh SEED [--fresh-episodes N]
-                                               # in/instances_fresh.json (published vs fresh boards, sartco.clem.fresh)
+                                               # in/instances_fresh.json (published vs fresh boards, sartco.clem.instruct.fresh)
     python games/cobot_instruct/instancegenerator.py --train [--train-episodes N]
-                                               # in/instances_train.json (training, sartco.clem.training)
+                                               # in/instances_train.json (training, sartco.clem.instruct.training)
 
 One file per kind of run, each played under its own clemgame.json entry (its own game name, so
 its results, and clem eval's clemscore, never mix with the others):
@@ -51,7 +51,7 @@ paper's generation settings (temperature 0, 250 tokens: run it with `clem run -t
 
 Feedback experiments (beyond the paper, issue 7): one experiment per Table 3 cell,
 `<cell>_feedback`, with the same episodes and the fields `attempts` (N, default 3: the first
-attempt plus up to N - 1 repairs after execution feedback, sartco.clem.feedback) and
+attempt plus up to N - 1 repairs after execution feedback, sartco.clem.core.feedback) and
 `feedback_of` (the cell's name).
     clem run -g cobot_instruct_feedback -m mock [-e sb_so_first_order_template_feedback]
 """
@@ -62,9 +62,9 @@ import os
 import sys
 from pathlib import Path
 
-from sartco.clem.fresh import FreshInstanceGenerator
-from sartco.clem.instance_values import InstanceGenerator
-from sartco.clem.instruct_generator import FEEDBACK_SUFFIX, InstructGenerator
+from sartco.clem.core.instance_values import InstanceGenerator
+from sartco.clem.instruct.fresh import FreshInstanceGenerator
+from sartco.clem.instruct.instruct_generator import FEEDBACK_SUFFIX, InstructGenerator
 from sartco.dataset import BOARD_KINDS, DESCRIBED_TASK, REGULAR_COMPLEX, REGULAR_SIMPLE, SIMPLE, BoardKind, board_kind
 from sartco.errors import UserError
 from sartco.instances.examples import MAX_EXAMPLES
@@ -112,7 +112,7 @@ class PaperInstanceGenerator(InstanceGenerator):
         super().__init__(str(GAME_DIR))
 
     def on_generate(self, seed: int, dataset_dir: Path, published_dir: Path | None = None):
-        from sartco.clem.paper import experiment_fields, instance_fields
+        from sartco.clem.paper.game import experiment_fields, instance_fields
         from sartco.paper import PROTOCOL
         from sartco.paper.episodes import DEFAULT_PUBLISHED, build_episodes
 
@@ -133,7 +133,7 @@ class PaperInstanceGenerator(InstanceGenerator):
 
 
 class CobotInstructInstanceGenerator(InstructGenerator):
-    """experiment() and add_episodes(): sartco.clem.instruct_generator."""
+    """experiment() and add_episodes(): sartco.clem.instruct.instruct_generator."""
 
     def __init__(self, feedback_attempts: int | None = None):
         super().__init__(str(GAME_DIR), feedback_attempts)

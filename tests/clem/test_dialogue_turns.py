@@ -1,4 +1,4 @@
-"""cobot_describe's dialogue on its own (sartco.clem.dialogue, sartco.clem.dialogue_answers): the
+"""cobot_describe's dialogue on its own (sartco.clem.describe.dialogue, sartco.clem.describe.dialogue_answers): the
 labels of the new turns, the mock describer's corrections on every test board, the rule-based
 builder reading corrections."""
 from __future__ import annotations
@@ -8,9 +8,9 @@ import json
 import pytest
 
 from play_helpers import REPO
-from sartco.clem.dialogue import parse_builder_answer, parse_review, settings_of
-from sartco.clem.dialogue_answers import correction_text
-from sartco.clem.parsing import ParseError
+from sartco.clem.core.parsing import ParseError
+from sartco.clem.describe.dialogue import parse_builder_answer, parse_review, settings_of
+from sartco.clem.describe.dialogue_answers import correction_text
 from sartco.follower import emit
 from sartco.follower.correct import apply_correction, pieces
 from sartco.program import execute_many

@@ -1,12 +1,12 @@
 """SARTCo as a training environment: the train split instance file and clemcore's gym env over
-it (sartco.clem.training), driven by a scripted policy: observations, rewards, info, episode ends."""
+it (sartco.clem.instruct.training), driven by a scripted policy: observations, rewards, info, episode ends."""
 import json
 from pathlib import Path
 
 import pytest
 
 from play_helpers import REPO, load_generator
-from sartco.clem.training import gym_env
+from sartco.clem.instruct.training import gym_env
 
 GAME_DIR = REPO / "games" / "cobot_instruct"
 
