@@ -34,7 +34,7 @@ from clemcore.clemgame import DialogueGameMaster, Player
 from clemcore.clemgame.errors import ParseError
 
 from sartco.clem.core import benchmark
-from sartco.clem.core.building import BuildRecord, build_for, end_build, log_build, parse_failure_for
+from sartco.clem.core.building import BuildRecord, build_for, parse_failure_for, record_build
 from sartco.clem.core.card import ScoreCard
 from sartco.clem.core.harness import HarnessGuard
 from sartco.clem.core.outcomes import log_outcome
@@ -104,7 +104,7 @@ class CobotDescribe(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameMas
         d = self.dialogue
         d.builds.append(record)
         d.answers, d.correction = [], None
-        log_build(self, record, final=False, attempt=len(d.builds))
+        record_build(self, d.builds, final=False)
         if record.error != ErrorCode.PARSE_ERROR and d.left("correction") > 0:
             d.expect = "review"
             self.set_context_for(self.describer, review_message(record, d.left("correction")))
@@ -113,7 +113,7 @@ class CobotDescribe(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameMas
 
     def _end(self):
         """The last build is the episode's result (its board event is logged already)."""
-        end_build(self, self.dialogue.builds[-1], self.dialogue.builds, instance=self.episode)
+        record_build(self, self.dialogue.builds, final=True, shown=True, instance=self.episode)
 
     def _on_parse_error(self, error: ParseError):
         e, d = self.episode, self.dialogue

@@ -34,7 +34,7 @@ from clemcore.clemgame import DialogueGameMaster, Player
 from clemcore.clemgame.errors import ParseError
 
 from sartco.clem.core import benchmark  # the module, not the class: one GameBenchmark subclass per master.py
-from sartco.clem.core.building import BuildRecord, build_for, finish_build, log_build, parse_failure_for
+from sartco.clem.core.building import BuildRecord, build_for, parse_failure_for, record_build
 from sartco.clem.core.card import ScoreCard
 from sartco.clem.core.feedback import feedback_for, max_attempts
 from sartco.clem.core.harness import HarnessGuard
@@ -85,9 +85,9 @@ class CobotInstruct(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameMas
         self.attempts.append(record)
         left = self.max_attempts - len(self.attempts)
         if record.es or left <= 0:
-            finish_build(self, record, self.attempts, instance=self.instance)
+            record_build(self, self.attempts, final=True, instance=self.instance)
             return
-        log_build(self, record, final=False, attempt=len(self.attempts))
+        record_build(self, self.attempts, final=False)
         self.codes = []
         self.set_context_for(self.builder, feedback_for(record, attempts_left=left))
 

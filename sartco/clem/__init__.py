@@ -6,7 +6,7 @@ folder), one package per thing it serves; lower packages never import higher one
             parsing.parse_code / ParseError (no code -> aborted; answer_lines: what one line is),
             outcomes (the one ErrorCode -> clemcore outcome translation), harness.HarnessGuard
             (harness faults -> harness_error, never the model's error), building (build_for,
-            parse_failure_for, finish_build, end_build, log_build, BuildRecord),
+            parse_failure_for, record_build (the one way to record a build), BuildRecord),
             feedback.feedback_for / max_attempts, scoring.BuildScorer, probes (function probes),
             card.ScoreCard, transcript.MarkdownTranscript, pictures.attach_all,
             benchmark.BuildBenchmark (checks the instance file up front), provenance (run.json),

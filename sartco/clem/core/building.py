@@ -1,13 +1,12 @@
 """Run a builder's code through sartco.program and record what happened, as one JSON-able record.
 
 The game master calls `build_for(instance, ...)` (`build` with the instance's board fields) once
-per episode (or once per attempt in a repair experiment) and ends the episode with
-`finish_build`: the build's board event (`log_build`), then `end_build`, which records it for the
-scorer and moves the game state with sartco.clem.core.outcomes. A build that the sandbox could not run
-(`harness_error`) raises HarnessFault from `build_for`: the master's harness guard
-(sartco.clem.core.harness) records it, never as the model's error (a dialogue whose builds' events are
-logged as they happen calls `end_build` alone). The scorer reads the record back with `BuildRecord.from_json`; it never
-executes anything.
+per episode (or once per attempt in a repair experiment) and records each build with
+`record_build`: its board event for the transcript and, for the build the episode ends with
+(`final`), the record for the scorer and the game state (sartco.clem.core.outcomes). A build
+that the sandbox could not run (`harness_error`) raises HarnessFault from `build_for`: the
+master's harness guard (sartco.clem.core.harness) records it, never as the model's error. The
+scorer reads the record back with `BuildRecord.from_json`; it never executes anything.
 """
 from __future__ import annotations
 
@@ -17,7 +16,7 @@ from sartco.episode import BUILD_KEY
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, SUCCESS_CATEGORY, ErrorCode, category_family
 from sartco.world.render import diff_svg, differing_cells
 
-from .outcomes import HarnessFault, set_attempts_outcome
+from .outcomes import HarnessFault, set_attempts_outcome, set_share_outcome
 from .transcript import code_block, picture, text_block
 
 BOARD_EVENT = "board"               # the GM->GM event that shows target and built board
@@ -149,40 +148,37 @@ def build_answers(instance: dict, answers: list[str]) -> BuildRecord:
     return build_for(instance, "\n".join(codes), turn_codes=codes)
 
 
-def finish_build(game_master, record: BuildRecord, attempts: list[BuildRecord] | None = None, *,
-                 instance: dict | None = None) -> None:
-    """The episode ends with `record`: log it as the final build, move the game state to the
-    outcome of the attempts (every attempt in order, `record` the last; default: `record` alone)
+def record_build(game_master, attempts: list[BuildRecord], *, final: bool, shown: bool = False,
+                 instance: dict | None = None, share: float | None = None) -> None:
+    """The one way a game master records a build: `attempts` are the episode's builds so far in
+    order, the newest last.
+
+    The newest build's board event (for the transcript, unless `shown`: logged when it was made):
+    outcome line, the executed program as code and the picture of target and built board, inside
+    the event so it shows whenever the transcript is made, linked to its full-size file
+    ATTEMPT_PICTURE (attempt = its position), which `clem score` writes beside interactions.json
+    (sartco.clem.core.pictures).
+    `final`: the episode's result is the newest build. Record it for the scorer (BUILD_KEY), probe
+    its function (with the episode's `instance`, sartco.clem.core.probes), move the game state to
+    the outcome of the attempts (or, for the paper protocol, to the `share` of turns that succeeded)
     and hand ES, cell F1, category and puts to clemcore's step info (what a gym env's `info` and
     reward function see, sartco.clem.instruct.training)."""
-    attempts = attempts or [record]
-    log_build(game_master, record, final=False, attempt=len(attempts))
-    end_build(game_master, record, attempts, instance=instance)
-
-
-def end_build(game_master, record: BuildRecord, attempts: list[BuildRecord], *, instance: dict | None = None) -> None:
-    """The episode's result is `record`, the last of `attempts`, whose board event is logged:
-    record it for the scorer (BUILD_KEY), probe its function (with the episode's `instance`,
-    sartco.clem.core.probes), set the outcome and the step info."""
     from .probes import log_probes
 
+    record = attempts[-1]
+    if not shown:
+        program = code_block(record.program) if record.program else text_block("(none: nothing was built)")
+        content = "\n\n".join([text_block(record.summary()), text_block("executed program:"), program,
+                                picture(record.svg(), ATTEMPT_PICTURE.format(len(attempts)), PICTURE_ALT)])
+        game_master.log_event("GM", "GM", {"type": BOARD_EVENT, "content": content,
+                                           "category": record.category})
+    if not final:
+        return
     game_master.log_key(BUILD_KEY, record.to_json())
     if instance is not None:
         log_probes(game_master, instance, record)
-    set_attempts_outcome(game_master.state, [a.category for a in attempts])
+    if share is None:
+        set_attempts_outcome(game_master.state, [a.category for a in attempts])
+    else:
+        set_share_outcome(game_master.state, share)
     game_master.info.update({key: getattr(record, name) for key, name in INFO_FIELDS.items()})
-
-
-def log_build(game_master, record: BuildRecord, *, final: bool = True, attempt: int = 1) -> None:
-    """Record a build in the episode: a GM->GM 'board' event for the transcript (outcome line,
-    the executed program as code, and the picture of target and built board, inside the event so
-    it shows whenever the transcript is made, linked to its full-size file ATTEMPT_PICTURE, which
-    `clem score` writes beside interactions.json, sartco.clem.core.pictures) and, for the final
-    build, the record under BUILD_KEY for the scorer."""
-    program = code_block(record.program) if record.program else text_block("(none: nothing was built)")
-    content = "\n\n".join([text_block(record.summary()), text_block("executed program:"), program,
-                            picture(record.svg(), ATTEMPT_PICTURE.format(attempt), PICTURE_ALT)])
-    game_master.log_event("GM", "GM", {"type": BOARD_EVENT, "content": content,
-                                       "category": record.category})
-    if final:
-        game_master.log_key(BUILD_KEY, record.to_json())

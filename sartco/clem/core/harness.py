@@ -27,7 +27,7 @@ from sartco.episode import BUILD_SCORES, ERROR_CATEGORY, ERROR_FAMILY, HARNESS_R
 from sartco.program.execution import clean
 from sartco.world import ErrorCode
 
-from .building import end_build, log_build, parse_failure_for
+from .building import parse_failure_for, record_build
 from .outcomes import HarnessFault, NoAnswer, log_outcome
 
 REASON_CHARS = 500
@@ -63,8 +63,7 @@ class HarnessGuard:
             return super().step(response)
         except Exception as exc:  # noqa: BLE001 - a fault of the game master or the sandbox, never the model's
             record = parse_failure_for(self.harness_instance, fault_reason("game master", exc), error=HARNESS)
-            log_build(self, record, final=False)
-            end_build(self, record, [record])
+            record_build(self, [record], final=True)
             log_outcome(self)
             self.log_game_end()
             return True, {}

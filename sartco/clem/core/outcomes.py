@@ -11,8 +11,8 @@ attempt without code loses (the builder did play) unless no attempt held code at
 as in the paper's protocol) - `outcome_of_attempts`; a harness fault in any attempt aborts.
 The paper protocol (sartco.clem.paper.game) never aborts: its episode succeeds when every turn's ES
 does (`set_share_outcome`).
-Games call `set_attempts_outcome` (through sartco.clem.core.building.finish_build) or
-`set_share_outcome`, and `log_outcome`; nothing else maps codes to outcomes.
+Games call `set_attempts_outcome` or `set_share_outcome` (both through
+sartco.clem.core.building.record_build), and `log_outcome`; nothing else maps codes to outcomes.
 """
 from __future__ import annotations
 

@@ -2,7 +2,7 @@
 
 Every 'board' event of an episode (one per attempt: attempt 1 in every episode, 2, 3, ... in the
 feedback experiments) carries its picture inside the event (a data: URL drawn by the game master
-while playing, sartco.clem.core.building.log_build), so `clem transcribe` shows it whether or not
+while playing, sartco.clem.core.building.record_build), so `clem transcribe` shows it whether or not
 `clem score` ran first; the picture links to `boards_<k>.svg`, a path relative to the episode
 folder where transcript.html is written, so a copied or published results folder keeps its links.
 The game master does not know its episode folder while playing, so these files are written when

@@ -2,7 +2,7 @@
 where the episode's usage line puts it?
 
 After an optimal_function or repetition episode's own build (both games' protocol and the paper
-protocol, sartco.clem.core.building.end_build and sartco.clem.paper.game.finish_paper), the function the
+protocol, sartco.clem.core.building.record_build, final build), the function the
 answer's usage line or loop calls is run on K fresh boards at K held-out arguments, and each
 board is compared with the gold function's board at the same arguments.
 

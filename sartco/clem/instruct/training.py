@@ -8,7 +8,7 @@ What a step gives (clemcore's GameMasterEnv; observation = the builder's context
 {"role": "user", "content": ...}, action = the answer text):
   info    at the episode's last step: `es` (0/1), `cell_f1` (0..1), `error_category` ("success",
           an ErrorCode value, a mismatch category or "parse_error") and `puts` of the final build
-          (sartco.clem.core.building.finish_build); {} at the other steps (the next instruction of a
+          (sartco.clem.core.building.record_build); {} at the other steps (the next instruction of a
           multi-turn episode, the feedback after a failed attempt)
   reward  REWARDS[name](observation, action, state, info):
           "es"       (default) execution success of the final build: 1.0 when the built board

@@ -19,9 +19,8 @@ object function in front (regular cells; elsewhere it equals Paper ES). Probed c
 from __future__ import annotations
 
 from sartco.clem.core.benchmark import json_fields
-from sartco.clem.core.building import build_answers, log_build
-from sartco.clem.core.outcomes import HarnessFault, set_share_outcome
-from sartco.clem.core.probes import log_probes
+from sartco.clem.core.building import build_answers, record_build
+from sartco.clem.core.outcomes import HarnessFault
 from sartco.clem.core.scoring import BuildScorer
 from sartco.clem.core.transcript import code_block, text_block
 from sartco.episode import LEAK_FREE_ES, PAPER_KEY, PAPER_SCORES, PaperExperiment, PaperProtocolEpisode
@@ -97,9 +96,7 @@ def finish_paper(game_master, instance: dict, answers: list[str]) -> None:
     game_master.log_key(PAPER_KEY, {"em": score.em, "cb": score.cb, "es": score.es, "es_leak_free": alone.es,
                                     "turns": turns})
     record = build_answers(instance, answers)
-    log_build(game_master, record)
-    log_probes(game_master, instance, record)
-    set_share_outcome(game_master.state, score.es)
+    record_build(game_master, [record], final=True, instance=instance, share=score.es)
 
 
 def check_turns(score) -> None:
