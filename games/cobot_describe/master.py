@@ -40,15 +40,15 @@ from sartco.clem.core.harness import HarnessGuard
 from sartco.clem.core.outcomes import log_outcome
 from sartco.clem.core.transcript import MarkdownTranscript
 from sartco.clem.describe.describer import Describer, fill_builder_prompt, log_instruction, parse_instruction
-from sartco.clem.describe.dialogue import (DONE, Dialogue, DialogueLog, DialogueScorer, answer_message,
-                                           correction_message, parse_answer, parse_builder_answer, parse_review,
-                                           question_message, review_message, settings_of)
+from sartco.clem.describe.dialogue import (DialogueScorer, answer_message, correction_message, parse_answer,
+                                           parse_builder_answer, parse_review, question_message, review_message,
+                                           settings_of)
 from sartco.clem.describe.dialogue_answers import builder_answers, describer_answers
+from sartco.clem.describe.turns import BuilderTurn, Dialogue, DialogueLog, Move, State
 from sartco.clem.players.sourced import Builder
 from sartco.episode import ATTEMPTS_KEY, DIALOGUE_KEY, DescribeEpisode
-from sartco.world import ErrorCode
 
-DESCRIBER_PARSERS = {"instruction": parse_instruction, "answer": parse_answer, "review": parse_review}
+DESCRIBER_PARSERS = {State.INSTRUCTION: parse_instruction, State.ANSWER: parse_answer, State.REVIEW: parse_review}
 
 
 class CobotDescribe(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameMaster):
@@ -68,45 +68,39 @@ class CobotDescribe(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameMas
     def _parse_response(self, player: Player, response: str):
         if player is self.builder:
             return parse_builder_answer(response, self.settings, self.dialogue.log.count("question"))
-        return DESCRIBER_PARSERS[self.dialogue.expect](response)
+        return DESCRIBER_PARSERS[self.dialogue.state](response)
 
     def _advance_game(self, player: Player, parsed):
         e, d = self.episode, self.dialogue
         if player is self.builder:
-            kind, text = parsed
-            if kind == "question":
-                d.log.add("question", text, len(d.builds))
-                d.expect = "answer"
-                self.set_context_for(self.describer, question_message(text))
+            turn: BuilderTurn = parsed
+            if turn.move is Move.QUESTION:
+                d.ask(turn.text)
+                self.set_context_for(self.describer, question_message(turn.text))
             else:
-                self._built(build_for(e, text))
+                self._built(build_for(e, turn.text))
             return
-        if d.expect == "instruction":
-            d.instruction = parsed
+        if d.state is State.INSTRUCTION:
+            d.instruct(parsed)
             log_instruction(self, parsed, e["combo_name"])
-            d.log.add("instruction", parsed, 0, describer=True)
             self.set_context_for(self.builder, fill_builder_prompt(e["builder_prompt"], parsed))
-        elif d.expect == "answer":
-            d.answers.append(parsed)
-            d.log.add("answer", parsed, len(d.builds), describer=True)
+        elif d.state is State.ANSWER:
+            d.answer(parsed)
             self.set_context_for(self.builder, answer_message(parsed, d.left("question")))
         elif parsed is None:  # the review says Done: the board stands
-            d.log.add("done", DONE, len(d.builds))
+            d.done()
             self._end()
         else:
-            d.correction = parsed
-            d.log.add("correction", parsed, len(d.builds), describer=True)
+            d.correct(parsed)
             self.set_context_for(self.builder, correction_message(parsed, d.left("question")))
 
     def _built(self, record: BuildRecord):
         """A build (or a builder answer without code) is over: the describer reviews it while
         corrections are left, else the episode ends with it."""
         d = self.dialogue
-        d.builds.append(record)
-        d.answers, d.correction = [], None
+        d.build(record)
         record_build(self, d.builds, final=False)
-        if record.error != ErrorCode.PARSE_ERROR and d.left("correction") > 0:
-            d.expect = "review"
+        if d.state is State.REVIEW:
             self.set_context_for(self.describer, review_message(record, d.left("correction")))
         else:
             self._end()
@@ -121,10 +115,10 @@ class CobotDescribe(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameMas
         if self.current_player is self.builder:
             self._built(parse_failure_for(e, f"{role}: {error.reason}"))
             return
-        if d.expect == "instruction":
+        if d.state is State.INSTRUCTION:
             log_instruction(self, None, e["combo_name"], error=error.reason)
-        d.log.add(f"no_{d.expect}", error.reason, len(d.builds))
-        if d.builds:
+        d.fail(error.reason)
+        if d.state is State.OVER:
             self._end()  # the board stands
         else:
             self._built(parse_failure_for(e, f"{role}: {error.reason}"))

@@ -3,8 +3,8 @@ each answers turn by turn, and which one a player gets for a model name."""
 import pytest
 
 from play_helpers import REPO, scripted_episode
-from sartco.clem.describe.dialogue import Dialogue, DialogueLog
 from sartco.clem.describe.dialogue_answers import DescriberMock, DialogueFollower, builder_answers, describer_answers
+from sartco.clem.describe.turns import Dialogue, DialogueLog
 from sartco.clem.players.answers import NO_CODE, GoldCode, InstructFollower, Scripted, instruct_answers
 from sartco.clem.players.sourced import RULEBASED, fenced
 
@@ -58,7 +58,8 @@ def test_describe_sources_read_what_was_said():
     describer = describer_answers("mock", episode, dialogue)
     assert isinstance(describer, DescriberMock)
     assert describer.answer(0) == f"Instruction: {episode['template_instruction']}"
-    dialogue.expect = "answer"
+    dialogue.instruct(episode["template_instruction"])
+    dialogue.ask("Which row?")
     assert describer.answer(1) == f"Answer: {episode['template_instruction']}"
     dialogue.instruction = episode["template_instruction"]
     assert isinstance(builder_answers("mock", episode, dialogue), DialogueFollower)

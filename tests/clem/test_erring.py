@@ -8,8 +8,8 @@ from collections import Counter
 import pytest
 
 from play_helpers import GAMES, play
-from sartco.clem.describe.dialogue import Dialogue, DialogueLog
 from sartco.clem.describe.erring_dialogue import ErringDescriber, sentences
+from sartco.clem.describe.turns import Dialogue, DialogueLog
 from sartco.clem.players.answers import InstructFollower
 from sartco.clem.players.erring import KINDS, SEED, ErringFollower, Slip, rng_for, slip_arrangement, slip_steps
 from sartco.follower import FollowError
@@ -141,7 +141,8 @@ def test_describer_garbles_and_omits_and_answers_with_the_missing_facts():
                     with pytest.raises(FollowError):
                         placements(sentence)
             seen.update(garbled=len(describer.garbled), omitted=len(describer.omitted))
-            describer.dialogue.expect = "answer"
+            describer.dialogue.instruct(said)
+            describer.dialogue.ask("Which row?")
             pending = list(describer.garbled)
             for sentence in pending:
                 assert describer.answer(1) == f"Answer: {sentence}"
@@ -169,7 +170,8 @@ def test_describer_drops_a_regular_boards_colour_list_and_answers_with_it():
             garbled += 1
             with pytest.raises(FollowError, match="no colours"):
                 arrange(said, episode["given_code"])
-            describer.dialogue.expect = "answer"
+            describer.dialogue.instruct(said)
+            describer.dialogue.ask("Which row?")
             answer = describer.answer(1).removeprefix("Answer: ")
             assert "colors: [" in answer and answer in episode["template_instruction"]
             assert arrange(f"{said} {answer}", episode["given_code"]) == arrange(episode["template_instruction"],

@@ -17,10 +17,7 @@ program stopped, and the board it left).
 - parse_builder_answer / parse_answer / parse_review   the labels of the new turns
 - clarify_note / question_message / answer_message / review_message / correction_message
                                                 the texts (resources/templates/dialogue/*.j2)
-- Dialogue / DialogueLog                         what was said so far (kept by the game master,
-                                                read by the built-in players of
-                                                sartco.clem.describe.dialogue_answers), logged under
-                                                DIALOGUE_KEY for the scorer
+- turns: Dialogue / DialogueLog / State / BuilderTurn   the state machine of the turns and the record
 - DialogueScorer                                 DescribeScorer + ES/F1 after the first and the
                                                 last build, ES after round k, first success round,
                                                 questions, corrections, describer words
@@ -29,7 +26,7 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import asdict, dataclass, field
+from dataclasses import dataclass
 
 from clemcore.clemgame import metrics
 
@@ -43,11 +40,11 @@ from sartco.instances.templates import render
 from sartco.world.render import grid_explanation, grid_text
 
 from .describer import DescribeScorer, label, text_under
+from .turns import BuilderTurn, DialogueLog
 
 MODES = DIALOGUE_MODES
 MODE_FIELD, QUESTIONS_FIELD, CORRECTIONS_FIELD = "mode", "questions", "corrections"
 DEFAULT_QUESTIONS, DEFAULT_CORRECTIONS = 2, 3
-DONE = "Done"
 
 _QUESTION = label(r"questions?")
 _ANSWER = label(r"answers?")
@@ -80,10 +77,10 @@ def settings_of(experiment: dict) -> Settings:
 
 
 # --- reading the new turns --------------------------------------------------------------------------
-def parse_builder_answer(text: str, settings: Settings, asked: int) -> tuple[str, str]:
-    """("question", text) when a clarifying builder asks (a "Question:" label), else ("code",
-    code). ParseError for a question past the limit (it counts as an answer without code), an
-    empty question, or an answer without code."""
+def parse_builder_answer(text: str, settings: Settings, asked: int) -> BuilderTurn:
+    """A question when a clarifying builder asks (a "Question:" label), else the code. ParseError
+    for a question past the limit (it counts as an answer without code), an empty question, or an
+    answer without code."""
     if settings.questions:
         question = text_under(text, _QUESTION)
         if question is not None:
@@ -91,8 +88,8 @@ def parse_builder_answer(text: str, settings: Settings, asked: int) -> tuple[str
                 raise ParseError(f"a question past the limit of {settings.questions} (no code)", response=text)
             if not question:
                 raise ParseError("the builder's 'Question:' label is followed by nothing", response=text)
-            return "question", question
-    return "code", parse_code(text)
+            return BuilderTurn.question(question)
+    return BuilderTurn.code(parse_code(text))
 
 
 def parse_answer(text: str) -> str:
@@ -142,46 +139,6 @@ def review_message(record: BuildRecord, corrections_left: int) -> str:
 
 def correction_message(correction: str, questions_left: int) -> str:
     return render("dialogue/correction.j2", correction=correction, questions_left=questions_left).strip()
-
-
-# --- the record and the scores ----------------------------------------------------------------------
-@dataclass
-class DialogueLog:
-    """What was said after the instruction, in order: {"kind": question | answer | review |
-    correction | done | no_review, "text", "build": builds so far}."""
-    mode: str
-    questions: int
-    corrections: int
-    events: list[dict] = field(default_factory=list)
-    describer_words: int = 0
-
-    def add(self, kind: str, text: str | None, builds: int, *, describer: bool = False) -> None:
-        self.events.append({"kind": kind, "text": text, "build": builds})
-        if describer and text:
-            self.describer_words += len(text.split())
-
-    def count(self, kind: str) -> int:
-        return sum(1 for e in self.events if e["kind"] == kind)
-
-    def to_json(self) -> dict:
-        return asdict(self)
-
-
-@dataclass
-class Dialogue:
-    """What has been said in an episode so far: the game master writes it as the dialogue goes
-    on; the built-in players read what they heard from it (sartco.clem.describe.dialogue_answers)."""
-    log: DialogueLog
-    expect: str = "instruction"        # the describer's next answer: instruction | answer | review
-    instruction: str | None = None
-    answers: list[str] = field(default_factory=list)   # the describer's answers since the last build
-    correction: str | None = None      # the correction the builder has not answered yet
-    builds: list[BuildRecord] = field(default_factory=list)
-
-    def left(self, kind: str) -> int:
-        """Questions ("question") or corrections left."""
-        limit = self.log.questions if kind == "question" else self.log.corrections
-        return limit - self.log.count(kind)
 
 
 class DialogueScorer(DescribeScorer):

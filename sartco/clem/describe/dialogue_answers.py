@@ -20,13 +20,13 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from sartco.clem.players.answers import Scripted, cannot_follow
-from sartco.clem.players.sourced import ERRING, RULEBASED, AnswerSource, fenced
+from sartco.clem.players.sourced import ERRING, RULEBASED, AnswerSource
 from sartco.follower import FollowError, emit, follow
 from sartco.follower.correct import apply_correction, correction_steps, pieces
 from sartco.instances.templates import render
 
-from .dialogue import DONE, Dialogue
 from .erring_dialogue import ErringBuilder, ErringDescriber
+from .turns import DONE, BuilderTurn, Dialogue, State
 
 
 # --- the mock describer -----------------------------------------------------------------------------
@@ -49,7 +49,7 @@ class DescriberMock:
         template = self.episode["template_instruction"]
         if turn == 0:
             return f"Instruction: {template}"
-        if self.dialogue.expect == "answer":
+        if self.dialogue.state is State.ANSWER:
             return f"Answer: {template}"
         return programmatic_review(self.dialogue.builds[-1].cells, self.episode["target"])
 
@@ -81,14 +81,14 @@ def _question(problem: str) -> str:
             f"(row and column of each)?")
 
 
-def rulebased_turn(view: BuilderView) -> tuple[str, str]:
-    """("code", code) or ("question", question). It follows the newest answer it can read; else,
+def rulebased_turn(view: BuilderView) -> BuilderTurn:
+    """Code, or a question. It follows the newest answer it can read; else,
     after a correction, the puts of its last board with the correction applied; else the
     instruction. When it can read none of them and may still ask, it asks."""
     problem = None
     for text in reversed(view.answers):
         try:
-            return "code", _follow(text, view)
+            return BuilderTurn.code(_follow(text, view))
         except FollowError as error:
             problem = problem or str(error)
     if view.correction is not None and view.built is not None:
@@ -97,17 +97,18 @@ def rulebased_turn(view: BuilderView) -> tuple[str, str]:
             steps = apply_correction(standing, view.correction, view.rows, view.cols)
         except FollowError as error:
             if view.questions_left:
-                return "question", _question(str(error))
+                return BuilderTurn.question(_question(str(error)))
             steps = standing  # it cannot read the correction: the same board again
         if not steps:
-            return "code", "# the correction leaves nothing to build"
-        return "code", emit.optimal_function(steps, None) if view.task == "optimal_function" else emit.first_order(steps)
+            return BuilderTurn.code("# the correction leaves nothing to build")
+        return BuilderTurn.code(emit.optimal_function(steps, None) if view.task == "optimal_function"
+                                else emit.first_order(steps))
     try:
-        return "code", _follow(view.instruction, view)
+        return BuilderTurn.code(_follow(view.instruction, view))
     except FollowError as error:
         if view.questions_left:
-            return "question", _question(problem or str(error))
-        return "code", cannot_follow(error)
+            return BuilderTurn.question(_question(problem or str(error)))
+        return BuilderTurn.code(cannot_follow(error))
 
 
 def _follow(text: str, view: BuilderView) -> str:
@@ -119,8 +120,7 @@ class DialogueFollower:
         self.episode, self.dialogue = episode, dialogue
 
     def answer(self, turn: int) -> str:
-        kind, text = rulebased_turn(builder_view(self.episode, self.dialogue))
-        return text if kind == "question" else fenced(text)
+        return rulebased_turn(builder_view(self.episode, self.dialogue)).written()
 
 
 # --- the choice -------------------------------------------------------------------------------------

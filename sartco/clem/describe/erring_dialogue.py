@@ -22,7 +22,7 @@ from __future__ import annotations
 import re
 
 from sartco.clem.players.erring import RATE, draw_slips, emit_steps, rng_for, slip_arrangement, slip_steps
-from sartco.clem.players.sourced import cannot_follow, fenced
+from sartco.clem.players.sourced import cannot_follow
 from sartco.follower import FollowError, emit
 from sartco.follower.correct import correction_steps, pieces, read_correction
 from sartco.follower.parse import object_name, placements
@@ -30,7 +30,7 @@ from sartco.follower.regular import arrange
 from sartco.instances.templates import render
 from sartco.world import COLORS
 
-from .dialogue import DONE, Dialogue
+from .turns import DONE, BuilderTurn, Dialogue, State
 
 _SENTENCE = re.compile(r"(?<=[.!?])\s+")
 _COLOUR_LIST = re.compile(r"colors:\s*\[[^\]]*\]")
@@ -71,7 +71,7 @@ class ErringDescriber:
         d = self.dialogue
         if turn == 0:
             return f"Instruction: {self.instruction}"
-        if d.expect == "answer":
+        if d.state is State.ANSWER:
             if self.garbled:
                 return f"Answer: {self.garbled.pop(0)}"
             if self.omitted:
@@ -101,10 +101,9 @@ class ErringBuilder:
         self.episode, self.dialogue = episode, dialogue
 
     def answer(self, turn: int) -> str:
-        kind, text = self.turn()
-        return text if kind == "question" else fenced(text)
+        return self.turn().written()
 
-    def turn(self) -> tuple[str, str]:
+    def turn(self) -> BuilderTurn:
         e, view = self.episode, self.dialogue  # what it heard; the cells its own last program built
         rows, cols, builds = e["rows"], e["cols"], len(view.builds)
         questions_left = view.left("question")
@@ -113,7 +112,7 @@ class ErringBuilder:
                 removals, additions = read_correction(view.correction, rows, cols)
             except FollowError as error:
                 if questions_left:
-                    return "question", _question(f"I cannot read your correction: {error}.")
+                    return BuilderTurn.question(_question(f"I cannot read your correction: {error}."))
                 removals, additions = [], []
             standing = [p for _, p in pieces(view.builds[-1].cells)]
             for p in removals:
@@ -123,25 +122,25 @@ class ErringBuilder:
             added = [p for g in slip_steps(additions, slips, rows, cols) for p in g]
             steps = standing + added
             task = "first_order" if e["task"] == "repetition" else e["task"]
-            return "code", emit_steps(task, steps, None) if steps else "# the correction leaves nothing to build"
+            return BuilderTurn.code(emit_steps(task, steps, None) if steps else "# the correction leaves nothing to build")
         if e["task"] == "repetition":
             return self._loop(view, questions_left)
         return self._pieces(view, questions_left)
 
-    def _loop(self, view: Dialogue, questions_left: int) -> tuple[str, str]:
+    def _loop(self, view: Dialogue, questions_left: int) -> BuilderTurn:
         e = self.episode
         try:
             arr = arrange(" ".join([view.instruction or "", *view.answers]), e["given_code"], e["rows"], e["cols"])
             emit.repetition(arr)  # the follower's checks (a name, an anchor)
         except FollowError as error:
             if questions_left:
-                return "question", _question(f"I cannot read this: {error}.")
-            return "code", cannot_follow(error)
+                return BuilderTurn.question(_question(f"I cannot read this: {error}."))
+            return BuilderTurn.code(cannot_follow(error))
         slips = draw_slips(len(arr.positions), rng_for(e, "build"), chances=len(arr.colors))
-        return "code", emit.repetition(slip_arrangement(arr, slips, e["rows"], e["cols"]) if slips else arr,
-                                       e["rows"], e["cols"])
+        return BuilderTurn.code(emit.repetition(slip_arrangement(arr, slips, e["rows"], e["cols"]) if slips else arr,
+                                                e["rows"], e["cols"]))
 
-    def _pieces(self, view: Dialogue, questions_left: int) -> tuple[str, str]:
+    def _pieces(self, view: Dialogue, questions_left: int) -> BuilderTurn:
         e = self.episode
         rows, cols = e["rows"], e["cols"]
         answers, steps, unread = list(view.answers), [], []
@@ -163,11 +162,11 @@ class ErringBuilder:
             except FollowError:
                 pass
         if questions_left and (unread or not steps):
-            return "question", _question(f"I cannot read this: {unread[0]!r}." if unread
-                                         else "I found no component to place in your instruction.")
+            return BuilderTurn.question(_question(f"I cannot read this: {unread[0]!r}." if unread
+                                                  else "I found no component to place in your instruction."))
         if not steps:
-            return "code", cannot_follow(FollowError("no placement found"))
+            return BuilderTurn.code(cannot_follow(FollowError("no placement found")))
         slips = draw_slips(len(steps), rng_for(e, "build"))
         puts = [p for g in slip_steps(steps, slips, rows, cols) for p in g]
         name = object_name(view.instruction or "")
-        return "code", emit_steps(e["task"], puts, name) if puts else "# I put nothing"
+        return BuilderTurn.code(emit_steps(e["task"], puts, name) if puts else "# I put nothing")
