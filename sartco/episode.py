@@ -10,7 +10,7 @@ here and nowhere else.
 from typing import NotRequired, TypedDict
 
 # ---------------------------------------------------------------------------- scores.json names
-# every build episode (sartco.clem.scoring.BuildScorer); Main Score is clemcore's BENCH_SCORE
+# every build episode (sartco.clem.core.scoring.BuildScorer); Main Score is clemcore's BENCH_SCORE
 EXECUTION_SUCCESS = "Execution Success"
 EXACT_MATCH = "Exact Match"
 CODEBLEU = "CodeBLEU"
@@ -29,7 +29,7 @@ ATTEMPTS = "Attempts"
 MAX_ATTEMPTS = "Max Attempts"
 ATTEMPT_CATEGORIES = "Attempt Categories"
 CATEGORY_SEPARATOR = ","  # in Attempt Categories
-# the describe dialogue (sartco.clem.dialogue)
+# the describe dialogue (sartco.clem.describe.dialogue)
 CELL_F1_AT_1 = "Cell F1@1"
 CELL_F1_AT_N = "Cell F1@N"
 FIRST_SUCCESS_ROUND = "First Success Round"
@@ -39,15 +39,15 @@ DESCRIBER_WORDS = "Describer Words"
 DIALOGUE_SCORES = (ES_AT_1, ES_AT_N, CELL_F1_AT_1, CELL_F1_AT_N, FIRST_SUCCESS_ROUND, QUESTIONS_ASKED,
                    CORRECTIONS_SENT, DESCRIBER_WORDS)
 ROUND_PREFIX = "ES Round "
-# the describer's instruction (sartco.clem.describer)
+# the describer's instruction (sartco.clem.describe.describer)
 DESCRIBER_ANSWERED = "Describer Answered"
 INSTRUCTION_WORDS = "Instruction Words"
 INSTRUCTION_CHARACTERS = "Instruction Characters"
 OBJECT_NAMED = "Object Named"
-# the paper protocol (sartco.clem.paper): shares of the dialogue's turns, 0..1
+# the paper protocol (sartco.clem.paper.game): shares of the dialogue's turns, 0..1
 PAPER_SCORES = {"em": "Paper EM", "cb": "Paper CB", "es": "Paper ES"}
 LEAK_FREE_ES = "Paper ES Leak-free"  # Paper ES with the answer run alone (no gold function in front)
-# function probes (sartco.clem.probes): optimal_function and repetition episodes only
+# function probes (sartco.clem.core.probes): optimal_function and repetition episodes only
 FUNCTION_GENERALISATION = "Function Generalisation"  # share of the probes built exactly, 0..1
 PROBE_CATEGORIES = "Probe Categories"  # each probe's category in order, joined by CATEGORY_SEPARATOR
 PROBE_FUNCTION = "Probe Function"      # whose function was probed: "model", "given" or "none"
@@ -59,19 +59,19 @@ def round_score(k: int) -> str:
 
 
 # ---------------------------------------------------------------------------- interactions.json keys
-BUILD_KEY = "sartco_build"            # one build's record (sartco.clem.building.BuildRecord.to_json)
+BUILD_KEY = "sartco_build"            # one build's record (sartco.clem.core.building.BuildRecord.to_json)
 ATTEMPTS_KEY = "sartco_attempts"      # every build of an episode, in order
 INSTRUCTION_KEY = "sartco_instruction"  # the describer's instruction: {"text", "error", "combo_name"}
 DIALOGUE_KEY = "sartco_dialogue"      # the describe dialogue's log
 PAPER_KEY = "sartco_paper"            # the paper protocol's reading: {"em", "cb", "es", "turns": [...]}
-PROBES_KEY = "sartco_probes"          # the function probes (sartco.clem.probes.run_probes)
+PROBES_KEY = "sartco_probes"          # the function probes (sartco.clem.core.probes.run_probes)
 MARKDOWN_KEY = "markdown"             # clemcore renders the transcript's messages as Markdown
 
 
 # ---------------------------------------------------------------------------- instance records
 # An instance file: {"experiments": [Experiment, ...]}, each experiment's "game_instances" a list
 # of episodes. The fields below are what the generators write; the games' benchmarks check an
-# episode's fields against its type before `clem run` plays (sartco.clem.benchmark.json_fields).
+# episode's fields against its type before `clem run` plays (sartco.clem.core.benchmark.json_fields).
 
 class PlayedEpisode(TypedDict):
     """What the game masters and BuildScorer read from every episode that ends in a build."""
@@ -83,12 +83,12 @@ class PlayedEpisode(TypedDict):
     given_code: str        # the code the program starts with (repetition: the object function)
     gold_code: str         # the gold answer in the task's style (exact match, CodeBLEU)
     # optional, written by no generator: answers `mock` gives verbatim, one per turn, instead of the
-    # gold (scripted episodes of the tests and of hand-made instance files; sartco.clem.answers)
+    # gold (scripted episodes of the tests and of hand-made instance files; sartco.clem.players.answers)
     script: NotRequired[list[str]]
 
 
 class BuildEpisode(PlayedEpisode):
-    """An episode of one board record of a dataset (sartco.clem.episodes.board_fields)."""
+    """An episode of one board record of a dataset (sartco.clem.core.episodes.board_fields)."""
     board_id: str
     board_type: str        # sartco.dataset.BOARD_TYPES
     object_type: str       # sartco.dataset.OBJECT_TYPES
@@ -106,7 +106,7 @@ class InstructEpisode(BuildEpisode):
 
 class DescribeEpisode(BuildEpisode):
     """A cobot_describe episode: the describer's prompt, the builder's prompt with a slot for the
-    instruction (sartco.clem.describer.INSTRUCTION_SLOT), what the mock describer writes."""
+    instruction (sartco.clem.describe.describer.INSTRUCTION_SLOT), what the mock describer writes."""
     example_ids: list[str]  # ids of the builder prompt's in-context examples
     describer_prompt: str
     builder_prompt: str
@@ -116,7 +116,7 @@ class DescribeEpisode(BuildEpisode):
 
 class PaperProtocolEpisode(PlayedEpisode):
     """A cobot_instruct_paper episode: sartco.paper.episodes.PaperEpisode.to_json() plus the board
-    fields our own build reads (sartco.clem.paper.instance_fields)."""
+    fields our own build reads (sartco.clem.paper.game.instance_fields)."""
     id: str
     file: str              # the published file (stem) of the sample
     sample: str
@@ -143,7 +143,7 @@ class Experiment(TypedDict):
 
 
 class _Feedback(TypedDict, total=False):
-    attempts: int          # attempts per episode, the first included (sartco.clem.feedback)
+    attempts: int          # attempts per episode, the first included (sartco.clem.core.feedback)
     feedback_of: str       # the experiment it repeats with feedback
 
 
@@ -153,7 +153,7 @@ class InstructExperiment(Experiment, _Feedback):
     dataset: dict          # the dataset's version, source, seed, path, generator seed, examples
 
 
-# cobot_describe's modes (experiment field `mode`; sartco.clem.dialogue plays them), in report order
+# cobot_describe's modes (experiment field `mode`; sartco.clem.describe.dialogue plays them), in report order
 DIALOGUE_MODES = ("oneshot", "clarify", "correct", "clarify_correct")
 
 
@@ -173,7 +173,7 @@ class DescribeExperiment(Experiment, _Dialogue):
 
 
 class PaperExperiment(Experiment):
-    """cobot_instruct_paper's experiments (sartco.clem.paper.experiment_fields)."""
+    """cobot_instruct_paper's experiments (sartco.clem.paper.game.experiment_fields)."""
     protocol: str
     instructions: str
     variant: str

@@ -16,7 +16,7 @@
 #                             the rule-based follower does not write the authors' answer format)
 #   cobot_instruct_ablations, cobot_instruct_feedback   val-split ablations, execution feedback and
 #                             repair: mock only (rulebased repeats its template numbers there)
-#   cobot_instruct_feedback, cobot_describe_dialogue   also by `erring` (sartco.clem.erring: the
+#   cobot_instruct_feedback, cobot_describe_dialogue   also by `erring` (sartco.clem.players.erring: the
 #                             rule-based players with seeded mistakes, p = 0.3, seed 42), whose
 #                             repairs, questions and corrections give the repair and dialogue tables
 #                             real recovery curves (about 4 min: play 1, score+transcribe 1, eval 2)
@@ -58,7 +58,7 @@ for MODEL in $MODELS; do
   play cobot_describe "$MODEL"
   play cobot_describe_dialogue "$MODEL"
 done
-# fresh boards (issue 24 item 3, sartco.clem.fresh): cobot_instruct_fresh, the published test boards beside as
+# fresh boards (issue 24 item 3, sartco.clem.instruct.fresh): cobot_instruct_fresh, the published test boards beside as
 # many fresh boards of FRESH_SEED (same strata; in no published and no seed-42 file: the overlap count printed),
 # template instructions, every model: contamination.md; with cobot_instruct_published: robustness.md
 FRESH_SEED="${FRESH_SEED:-7}"

@@ -2,7 +2,7 @@
 and through the game loop (tests/games/test_feedback.py)."""
 import re
 
-from sartco.clem.building import build
+from sartco.clem.core.building import build
 
 # a red washer with a blue nut at (7, 3), a yellow bridge-h at (2, 5)-(2, 6), and a distinctive
 # cell the wrong answers never build: a green screw at (0, 0) (nothing else is green or a screw)

@@ -2,14 +2,14 @@
 sees only those instructions writes Python; the game master runs the code and scores the board.
 
 Player 1, the Describer: the describer prompt (environment, the board as the paper's text grid,
-the object's name, the grid explanation; answer under "Instruction:"), sartco.clem.describer.
+the object's name, the grid explanation; answer under "Instruction:"), sartco.clem.describe.describer.
 Player 2, the Builder: cobot_instruct's builder prompt (with its in-context examples) holding the
-describer's instruction, sartco.clem.players; its code runs through sartco.clem.building.
+describer's instruction, sartco.clem.players.sourced; its code runs through sartco.clem.core.building.
 `clem run -g cobot_describe -m A B`: A describes, B builds; `-m A`: A plays both roles.
-Programmatic players (sartco.clem.dialogue_answers): `mock` and `rulebased` describe with the
+Programmatic players (sartco.clem.describe.dialogue_answers): `mock` and `rulebased` describe with the
 episode's template instruction; as builders both are the rule-based follower reading the
 describer's text (never gold code); `erring` omits and garbles pieces as describer and slips as
-builder (sartco.clem.erring_dialogue).
+builder (sartco.clem.describe.erring_dialogue).
 
 Episode = one instance of in/instances.json (instancegenerator.py; sartco.episode.DescribeEpisode):
   describer_prompt      the Describer's prompt
@@ -18,13 +18,13 @@ Episode = one instance of in/instances.json (instancegenerator.py; sartco.episod
   board_id, board_type, object_type, combo_name, task, rows, cols, target, given_code, gold_code
   record                the board record (what `sartco import-instructions` turns into a dataset)
   describer_script / builder_script (optional)  raw answers of `mock`, for scripted tests
-Modes (experiment field `mode`, sartco.clem.dialogue): oneshot; clarify (the builder may ask up to
+Modes (experiment field `mode`, sartco.clem.describe.dialogue): oneshot; clarify (the builder may ask up to
 K questions, the describer answers); correct (the describer sees each built board and answers
 "Done" or a correction, the builder rebuilds from scratch, up to R corrections); clarify_correct.
 Every build is logged (a board event each, all records under `sartco_attempts`), the last one
 under `sartco_build` (scored); what was said under `sartco_dialogue`.
 Outcomes: no instruction, or no code in any builder answer -> aborted; otherwise the last build
-decides (sartco.clem.outcomes; an answer without code after a build loses). A describer who
+decides (sartco.clem.core.outcomes; an answer without code after a build loses). A describer who
 answers a review with neither "Done" nor a correction, or gives no answer to a question after
 a build, leaves the last board standing.
 """
@@ -33,22 +33,22 @@ from __future__ import annotations
 from clemcore.clemgame import DialogueGameMaster, Player
 from clemcore.clemgame.errors import ParseError
 
-from sartco.clem import benchmark
-from sartco.clem.building import BuildRecord, build_for, end_build, log_build, parse_failure_for
-from sartco.clem.card import ScoreCard
-from sartco.clem.describer import Describer, fill_builder_prompt, log_instruction, parse_instruction
-from sartco.clem.dialogue import (DONE, Dialogue, DialogueLog, DialogueScorer, answer_message, correction_message,
-                                  parse_answer, parse_builder_answer, parse_review, question_message, review_message,
-                                  settings_of)
-from sartco.clem.dialogue_answers import builder_answers, describer_answers
-from sartco.clem.harness import HarnessGuard
-from sartco.clem.outcomes import log_outcome
-from sartco.clem.players import Builder
-from sartco.clem.transcript import MarkdownTranscript
+from sartco.clem.core import benchmark
+from sartco.clem.core.building import BuildRecord, build_for, parse_failure_for, record_build
+from sartco.clem.core.card import ScoreCard
+from sartco.clem.core.harness import HarnessGuard
+from sartco.clem.core.outcomes import log_outcome
+from sartco.clem.core.transcript import MarkdownTranscript
+from sartco.clem.describe.describer import Describer, fill_builder_prompt, log_instruction, parse_instruction
+from sartco.clem.describe.dialogue import (DialogueScorer, answer_message, correction_message, parse_answer,
+                                           parse_builder_answer, parse_review, question_message, review_message,
+                                           settings_of)
+from sartco.clem.describe.dialogue_answers import builder_answers, describer_answers
+from sartco.clem.describe.turns import BuilderTurn, Dialogue, DialogueLog, Move, State
+from sartco.clem.players.sourced import Builder
 from sartco.episode import ATTEMPTS_KEY, DIALOGUE_KEY, DescribeEpisode
-from sartco.world import ErrorCode
 
-DESCRIBER_PARSERS = {"instruction": parse_instruction, "answer": parse_answer, "review": parse_review}
+DESCRIBER_PARSERS = {State.INSTRUCTION: parse_instruction, State.ANSWER: parse_answer, State.REVIEW: parse_review}
 
 
 class CobotDescribe(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameMaster):
@@ -68,52 +68,46 @@ class CobotDescribe(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameMas
     def _parse_response(self, player: Player, response: str):
         if player is self.builder:
             return parse_builder_answer(response, self.settings, self.dialogue.log.count("question"))
-        return DESCRIBER_PARSERS[self.dialogue.expect](response)
+        return DESCRIBER_PARSERS[self.dialogue.state](response)
 
     def _advance_game(self, player: Player, parsed):
         e, d = self.episode, self.dialogue
         if player is self.builder:
-            kind, text = parsed
-            if kind == "question":
-                d.log.add("question", text, len(d.builds))
-                d.expect = "answer"
-                self.set_context_for(self.describer, question_message(text))
+            turn: BuilderTurn = parsed
+            if turn.move is Move.QUESTION:
+                d.ask(turn.text)
+                self.set_context_for(self.describer, question_message(turn.text))
             else:
-                self._built(build_for(e, text))
+                self._built(build_for(e, turn.text))
             return
-        if d.expect == "instruction":
-            d.instruction = parsed
+        if d.state is State.INSTRUCTION:
+            d.instruct(parsed)
             log_instruction(self, parsed, e["combo_name"])
-            d.log.add("instruction", parsed, 0, describer=True)
             self.set_context_for(self.builder, fill_builder_prompt(e["builder_prompt"], parsed))
-        elif d.expect == "answer":
-            d.answers.append(parsed)
-            d.log.add("answer", parsed, len(d.builds), describer=True)
+        elif d.state is State.ANSWER:
+            d.answer(parsed)
             self.set_context_for(self.builder, answer_message(parsed, d.left("question")))
         elif parsed is None:  # the review says Done: the board stands
-            d.log.add("done", DONE, len(d.builds))
+            d.done()
             self._end()
         else:
-            d.correction = parsed
-            d.log.add("correction", parsed, len(d.builds), describer=True)
+            d.correct(parsed)
             self.set_context_for(self.builder, correction_message(parsed, d.left("question")))
 
     def _built(self, record: BuildRecord):
         """A build (or a builder answer without code) is over: the describer reviews it while
         corrections are left, else the episode ends with it."""
         d = self.dialogue
-        d.builds.append(record)
-        d.answers, d.correction = [], None
-        log_build(self, record, final=False, attempt=len(d.builds))
-        if record.error != ErrorCode.PARSE_ERROR and d.left("correction") > 0:
-            d.expect = "review"
+        d.build(record)
+        record_build(self, d.builds, final=False)
+        if d.state is State.REVIEW:
             self.set_context_for(self.describer, review_message(record, d.left("correction")))
         else:
             self._end()
 
     def _end(self):
         """The last build is the episode's result (its board event is logged already)."""
-        end_build(self, self.dialogue.builds[-1], self.dialogue.builds, instance=self.episode)
+        record_build(self, self.dialogue.builds, final=True, shown=True, instance=self.episode)
 
     def _on_parse_error(self, error: ParseError):
         e, d = self.episode, self.dialogue
@@ -121,10 +115,10 @@ class CobotDescribe(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameMas
         if self.current_player is self.builder:
             self._built(parse_failure_for(e, f"{role}: {error.reason}"))
             return
-        if d.expect == "instruction":
+        if d.state is State.INSTRUCTION:
             log_instruction(self, None, e["combo_name"], error=error.reason)
-        d.log.add(f"no_{d.expect}", error.reason, len(d.builds))
-        if d.builds:
+        d.fail(error.reason)
+        if d.state is State.OVER:
             self._end()  # the board stands
         else:
             self._built(parse_failure_for(e, f"{role}: {error.reason}"))

@@ -1,9 +1,9 @@
 """cobot_instruct: a Builder model writes Python that builds a target board from instructions.
 
-Thin by design: _parse_response only finds the code (sartco.clem.parsing), _advance_game
+Thin by design: _parse_response only finds the code (sartco.clem.core.parsing), _advance_game
 collects it and, after the last instruction, runs it through sartco.program and records the
-result (sartco.clem.building); the scorer turns the recorded build into numbers
-(sartco.clem.scoring); the transcript ends with a score card of those numbers (sartco.clem.card).
+result (sartco.clem.core.building); the scorer turns the recorded build into numbers
+(sartco.clem.core.scoring); the transcript ends with a score card of those numbers (sartco.clem.core.card).
 The builder never sees the target board.
 
 Episode = one instance of in/instances.json (sartco.episode.InstructEpisode):
@@ -16,7 +16,7 @@ Episode = one instance of in/instances.json (sartco.episode.InstructEpisode):
   target        the target board in canonical cells form; rows, cols; task
 Multi-turn: the builder's code accumulates over the turns and is executed once at the end.
 Feedback experiments (experiment field `attempts` N > 1):
-after a failed attempt the builder gets sartco.clem.feedback's message (error code and message,
+after a failed attempt the builder gets sartco.clem.core.feedback's message (error code and message,
 or "the board you built differs", with the built board as grid_text; never the target) and
 answers with the complete corrected code, run on a fresh board, up to N attempts. An answer
 without code is then a failed attempt (parse_error) like any other; the episode is aborted only
@@ -25,7 +25,7 @@ under `sartco_build` (scored).
 
 The paper protocol (game entry cobot_instruct_paper, in/instances_paper.json; instance field
 `protocol: "paper"`): the turns are the authors' user messages (`messages`), `mock` answers the
-episode's `mock_answers`, no answer is refused, and after the last one sartco.clem.paper scores
+episode's `mock_answers`, no answer is refused, and after the last one sartco.clem.paper.game scores
 every turn as the authors' scorer did and records our build beside it.
 """
 from __future__ import annotations
@@ -33,17 +33,17 @@ from __future__ import annotations
 from clemcore.clemgame import DialogueGameMaster, Player
 from clemcore.clemgame.errors import ParseError
 
-from sartco.clem import benchmark  # the module, not the class: one GameBenchmark subclass per master.py
-from sartco.clem.answers import instruct_answers
-from sartco.clem.building import BuildRecord, build_for, finish_build, log_build, parse_failure_for
-from sartco.clem.card import ScoreCard
-from sartco.clem.feedback import feedback_for, max_attempts
-from sartco.clem.harness import HarnessGuard
-from sartco.clem.outcomes import log_outcome
-from sartco.clem.paper import PAPER_EPISODE_FIELDS, PaperScorer, finish_paper, is_paper
-from sartco.clem.parsing import parse_code
-from sartco.clem.players import Builder
-from sartco.clem.transcript import MarkdownTranscript
+from sartco.clem.core import benchmark  # the module, not the class: one GameBenchmark subclass per master.py
+from sartco.clem.core.building import BuildRecord, build_for, parse_failure_for, record_build
+from sartco.clem.core.card import ScoreCard
+from sartco.clem.core.feedback import feedback_for, max_attempts
+from sartco.clem.core.harness import HarnessGuard
+from sartco.clem.core.outcomes import log_outcome
+from sartco.clem.core.parsing import parse_code
+from sartco.clem.core.transcript import MarkdownTranscript
+from sartco.clem.paper.game import PAPER_EPISODE_FIELDS, PaperScorer, finish_paper, is_paper
+from sartco.clem.players.answers import instruct_answers
+from sartco.clem.players.sourced import Builder
 from sartco.episode import ATTEMPTS_KEY, InstructEpisode, PaperProtocolEpisode
 
 
@@ -85,9 +85,9 @@ class CobotInstruct(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameMas
         self.attempts.append(record)
         left = self.max_attempts - len(self.attempts)
         if record.es or left <= 0:
-            finish_build(self, record, self.attempts, instance=self.instance)
+            record_build(self, self.attempts, final=True, instance=self.instance)
             return
-        log_build(self, record, final=False, attempt=len(self.attempts))
+        record_build(self, self.attempts, final=False)
         self.codes = []
         self.set_context_for(self.builder, feedback_for(record, attempts_left=left))
 

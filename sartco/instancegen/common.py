@@ -15,12 +15,12 @@ from typing import Callable
 
 from clemcore.clemgame import GameInstanceGenerator
 
-from sartco.clem.fresh import REPO
-from sartco.clem.instruct_generator import InstructGenerator
+from sartco.clem.instruct.instruct_generator import InstructGenerator
 from sartco.dataset import BoardKind
 from sartco.errors import UserError
+from sartco.settings import workspace
 
-GAMES = REPO / "games"
+GAMES = workspace() / "games"
 
 
 class InstanceFile(InstructGenerator):
@@ -57,7 +57,7 @@ def dataset_info(manifest: dict, path: Path, seed: int, n_examples: int, example
     """What a cobot_instruct instance file records about its dataset (examples_from: the dataset
     of the in-context examples when it is another one)."""
     info = {"version": manifest["version"], "source": manifest["source"], "seed": manifest.get("seed"),
-            "path": os.path.relpath(path, REPO)}
+            "path": os.path.relpath(path, workspace())}
     if examples_from is not None:
         info["examples_from"] = examples_from
     return {**info, "generator_seed": seed, "n_examples": n_examples}

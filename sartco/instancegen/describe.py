@@ -10,12 +10,12 @@ with --examples in-context examples from the dataset's train split (select_examp
 --seed); the instruction slot is filled during the game with what the describer wrote. The file
 records the dataset version and seed (`dataset`) and the generator's seed (`seed`).
 
-Each board kind is played in every mode of sartco.clem.dialogue.MODES: `oneshot` (the three
+Each board kind is played in every mode of sartco.clem.describe.dialogue.MODES: `oneshot` (the three
 experiments above, named by the board kind only) in in/instances.json, the game entry
 `cobot_describe` (the paper's one-shot game: its clemscore means that alone), and `<kind>_clarify`,
 `<kind>_correct`, `<kind>_clarify_correct` (experiment fields `mode`, `questions` K = --questions,
 `corrections` R = --corrections; the same boards and prompts, the builder's prompt of a clarify
-mode ends with the paragraph on questions, sartco.clem.dialogue.clarify_note) in
+mode ends with the paragraph on questions, sartco.clem.describe.dialogue.clarify_note) in
 in/instances_dialogue.json, the entry `cobot_describe_dialogue`. game_id counts over both files
 (mode by mode, as one file would), so ids are unique across the two entries.
 
@@ -28,9 +28,9 @@ from __future__ import annotations
 from argparse import Namespace
 from pathlib import Path
 
-from sartco.clem.describer import INSTRUCTION_SLOT
-from sartco.clem.dialogue import MODES, clarify_note
-from sartco.clem.episodes import board_fields
+from sartco.clem.describe.describer import INSTRUCTION_SLOT
+from sartco.clem.describe.dialogue import MODES, clarify_note
+from sartco.clem.core.episodes import board_fields
 from sartco.dataset import BOARD_KINDS, DESCRIBED_TASK
 from sartco.episode import DescribeEpisode, DescribeExperiment
 from sartco.instances.examples import select_examples

@@ -8,14 +8,14 @@ name, so its results, and clem eval's clemscore, never mix with the others):
                             each prompt section removed;
   instances_feedback.json   cobot_instruct_feedback: the Table 3 template cells, `<cell>_feedback`,
                             with `attempts` (the first attempt plus up to N - 1 repairs after
-                            execution feedback, sartco.clem.feedback) and `feedback_of` (the cell);
+                            execution feedback, sartco.clem.core.feedback) and `feedback_of` (the cell);
   instances_smoke.json      the first --smoke episodes of each Table 3 template cell (the same
                             episodes as in instances.json): `clem run -g cobot_instruct -i instances_smoke`;
   instances_published.json  cobot_instruct_published (gitignored: it embeds the published texts),
                             from the imported published data (`sartco import ../shared/sartco-data/published
                             --out instances/published`): the human- and model-written cells of Table 3;
   instances_published_feedback.json  cobot_instruct_published_feedback (gitignored);
-  instances_train.json      the train split, for training (sartco.clem.training): one experiment per
+  instances_train.json      the train split, for training (sartco.clem.instruct.training): one experiment per
                             cell, `<cell>_train`, over the first --train-episodes train boards (0: all);
                             the examples from the same pool, never the episode's own board;
   instances_describers.json from a `sartco import-instructions` dataset: one experiment per
@@ -25,7 +25,7 @@ name, so its results, and clem eval's clemscore, never mix with the others):
                             named paper_<cell>_<task>_<source>, each recording protocol "paper", its
                             variant, where its examples came from and the paper's generation settings
                             (temperature 0, 250 tokens: `clem run -t 0 -l 250`);
-  instances_fresh.json      cobot_instruct_fresh (gitignored; sartco.clem.fresh): each template
+  instances_fresh.json      cobot_instruct_fresh (gitignored; sartco.clem.instruct.fresh): each template
                             cell's published test boards beside as many fresh boards of a seed.
 
 Experiment names: <board>_<object>_<task>_<source>[_<ablation>], board sb|rb, object so|co
@@ -41,13 +41,14 @@ import os
 from argparse import Namespace
 from pathlib import Path
 
-from sartco.clem.fresh import DEFAULT_PUBLISHED, REPO, FreshInstanceGenerator
-from sartco.clem.instruct_generator import FEEDBACK_SUFFIX
+from sartco.clem.instruct.fresh import DEFAULT_PUBLISHED, FreshInstanceGenerator
+from sartco.clem.instruct.instruct_generator import FEEDBACK_SUFFIX
 from sartco.dataset import BOARD_KINDS, DESCRIBED_TASK, REGULAR_COMPLEX, REGULAR_SIMPLE, SIMPLE, board_kind
 from sartco.errors import UserError
 from sartco.instances.examples import MAX_EXAMPLES
 from sartco.instances.prompts import SECTIONS
 from sartco.instances.storage import load_dataset
+from sartco.settings import workspace
 
 from .common import InstanceFile, dataset_info, records, write
 
@@ -144,7 +145,7 @@ def paper(gen: InstanceFile, seed: int, dataset_dir: Path, published_dir: Path |
     """The paper protocol (sartco.paper.episodes.build_episodes) on the published test files (from
     ../shared), one experiment per Table 3 cell, paper_<cell>_<task>_<source>. seed: unused (the
     paper's examples have their own)."""
-    from sartco.clem.paper import experiment_fields, instance_fields
+    from sartco.clem.paper.game import experiment_fields, instance_fields
     from sartco.paper import PROTOCOL
     from sartco.paper import episodes as paper_episodes
 
@@ -152,8 +153,8 @@ def paper(gen: InstanceFile, seed: int, dataset_dir: Path, published_dir: Path |
     cells: dict[tuple, list[dict]] = {}
     for ep in paper_episodes.build_episodes(published_dir=published_dir, generated_dir=dataset_dir):
         cells.setdefault((ep.file, ep.variant), []).append(ep.to_json())
-    gen.instances["dataset"] = {"protocol": PROTOCOL, "published": os.path.relpath(published_dir, REPO),
-                                "generated": os.path.relpath(dataset_dir, REPO)}
+    gen.instances["dataset"] = {"protocol": PROTOCOL, "published": os.path.relpath(published_dir, workspace()),
+                                "generated": os.path.relpath(dataset_dir, workspace())}
     for episodes in cells.values():
         cell = episodes[0]["cell"]
         kind = board_kind(cell["board"], cell["object"])

@@ -19,9 +19,9 @@ Protocols:
   instances_published.json when present). file = experiment name, sample = board id, variant =
   task; messages = what the Builder receives per turn (the episode's `turns`: the first holds the
   whole prompt). Scored as the game scores: each
-  answer's code found by sartco.clem.parsing.parse_code (an answer without code aborts the
+  answer's code found by sartco.clem.core.parsing.parse_code (an answer without code aborts the
   episode: category parse_error, "aborted": true, all scores 0), the turns' code joined and run by
-  sartco.clem.building.build; em/cb of the whole program against the gold code (sartco.scores),
+  sartco.clem.core.building.build; em/cb of the whole program against the gold code (sartco.scores),
   es, f1, precision, recall, category; "turns" holds one entry, the whole program (our protocol
   has no CodeBLEU pass: its "cb" is the CodeBLEU score).
   --data: the folder of the instance files (default games/cobot_instruct/in).

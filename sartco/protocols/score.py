@@ -13,8 +13,8 @@ import json
 import sys
 from pathlib import Path
 
-from sartco.clem.outcomes import HarnessFault
-from sartco.clem.paper import check_turns
+from sartco.clem.core.outcomes import HarnessFault
+from sartco.clem.paper.game import check_turns
 from sartco.errors import UserError
 from sartco.paper.vocabulary import PROTOCOL, published_test_files
 from sartco.text import escape
@@ -91,7 +91,7 @@ def score_paper(episode: dict, responses: list[str]) -> dict:
 
 def score_ours(episode: dict, responses: list[str]) -> dict:
     """As cobot_instruct's master and BuildScorer do (one attempt)."""
-    from sartco.clem.building import build_answers
+    from sartco.clem.core.building import build_answers
     from sartco.scores import code_bleu, exact_match
     from sartco.world import ErrorCode
 

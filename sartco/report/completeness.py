@@ -1,8 +1,8 @@
 """Is a results folder complete? Every (model, game, experiment) of a results folder against the
-episodes of the instance file it was played from (sartco.clem.provenance.played_instance_file:
+episodes of the instance file it was played from (sartco.clem.core.provenance.played_instance_file:
 run.json's, else the game entry's default file).
 
-What counts as missing, errored, unscored or unreadable: sartco.clem.completeness.
+What counts as missing, errored, unscored or unreadable: sartco.clem.tooling.completeness.
 The experiments checked: with run.json those its sessions played (all of the file when one of
 them had no -e), without it those with a folder. `sartco report` writes completeness.md / .csv,
 marks each incomplete cell with INCOMPLETE_MARK and exits with INCOMPLETE_STATUS; `sartco resume`
@@ -15,8 +15,8 @@ from collections import Counter
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from sartco.clem.completeness import INCOMPLETE_STATUS, PROBLEMS, Unverifiable, check_game
-from sartco.clem.provenance import ProvenanceError
+from sartco.clem.core.provenance import ProvenanceError
+from sartco.clem.tooling.completeness import INCOMPLETE_STATUS, PROBLEMS, Unverifiable, check_game
 from sartco.errors import UserError
 
 from .files import markdown_table, write_csv

@@ -1,6 +1,6 @@
 """harness.md / harness.csv of `sartco report`: the episodes in which the harness failed, not the
 model (Error Category harness_error: the sandbox could not run the program or gave no usable
-answer, or the game master or the scorer raised; sartco.clem.harness), per model and game.
+answer, or the game master or the scorer raised; sartco.clem.core.harness), per model and game.
 
 Such an episode is left out of every other table's scores (it is no measurement of the model)
 and counted here; `sartco report` then exits with HARNESS_STATUS, so that `make main` fails.

@@ -148,7 +148,7 @@ def markdown(header_rows: tuple[list[str], list[dict]], notes: dict[str, str], w
             "instructions; GPT-4- and Claude-written instructions have no figure in the paper (\"no figure\"); "
             "\"not run\": a cell these results do not hold. Beyond the paper: \"ES leak-free\" runs each answer "
             "without the gold object function the paper puts in front of it (regular cells; elsewhere it "
-            "equals ES), \"FG\" is the share of function probes built exactly (sartco.clem.probes; \"n/a\": a "
+            "equals ES), \"FG\" is the share of function probes built exactly (sartco.clem.core.probes; \"n/a\": a "
             "cell without probes); the paper's ES stays the paper's.\n\n")
     text += "\n".join(tables)
     if notes:

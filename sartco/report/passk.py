@@ -18,7 +18,7 @@ from collections import defaultdict
 from math import comb
 from pathlib import Path
 
-from sartco.clem.sampling import SAMPLES  # RESULTS/samples/s1..sN
+from sartco.clem.tooling.sampling import SAMPLES  # RESULTS/samples/s1..sN
 
 from .files import markdown_table, write_csv
 

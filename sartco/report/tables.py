@@ -31,13 +31,11 @@ from pathlib import Path
 
 from sartco.errors import UserError
 from sartco.dataset import SOURCES as SOURCE_ORDER, TASKS as TASK_ORDER
-from sartco.episode import (ATTEMPTS, CELL_F1, CODEBLEU, ERROR_CATEGORY, ES_AT_1, EXACT_MATCH, EXECUTION_SUCCESS,
-                            FUNCTION_GENERALISATION, HARNESS_REASON, MAX_ATTEMPTS)
-from sartco.world import ErrorCode
 
 from . import (completeness, contamination, dialogue_table, harness_table, html, html_tables, intervals, paper_table,
                passk, robustness)
-from .files import load_json, markdown_table, number, percent, replace_stale, write_csv
+from .files import load_json, markdown_table, percent, replace_stale, write_csv
+from .rows import EpisodeRow, episode_row
 
 # clemgame entries whose cells are rows of another game's Table 3 (the published human- and
 # model-written instructions beside the template ones, as in the paper); every other game name
@@ -55,8 +53,8 @@ def configure(parser: argparse.ArgumentParser) -> None:
                         help="only this game (repeatable; default: every game with SARTCo experiments)")
 
 
-def collect(results: Path, games: list[str] | None = None) -> list[dict]:
-    """One row per scored episode: the experiment's fields, the model and the episode scores."""
+def collect(results: Path, games: list[str] | None = None) -> list[EpisodeRow]:
+    """One row per scored episode (sartco.report.rows.episode_row)."""
     if not results.is_dir():
         raise UserError(f"{results}: no such results folder")
     experiments: dict[Path, dict | None] = {}
@@ -79,23 +77,7 @@ def collect(results: Path, games: list[str] | None = None) -> list[dict]:
             data = load_json(path)
         except UserError:
             continue  # listed as unreadable by sartco.report.completeness
-        scores = data.get("episode scores", {})
-        attempts = int(scores.get(MAX_ATTEMPTS, 1))  # logged by the scorer of a feedback experiment
-        episodes.append({
-            "game": game, "model": exp_dir.parent.parent.name, "experiment": exp["name"], "episode": episode_dir.name,
-            "board_type": exp["board_type"], "object_type": exp["object_type"], "task": exp["task"],
-            "source": exp.get("source", ""), "split": exp.get("split", ""), "ablation": exp.get("ablation"),
-            "aborted": int(scores.get("Aborted", 0) or 0),
-            "em": number(scores.get(EXACT_MATCH)), "cb": number(scores.get(CODEBLEU)),
-            "es": number(scores.get(EXECUTION_SUCCESS)), "f1": number(scores.get(CELL_F1)),
-            "fg": number(scores.get(FUNCTION_GENERALISATION)), "probed": FUNCTION_GENERALISATION in scores,
-            "category": scores.get(ERROR_CATEGORY) or (str(ErrorCode.PARSE_ERROR) if scores.get("Aborted") else "unknown"),
-            "harness_reason": scores.get(HARNESS_REASON) or "",
-            "max_attempts": attempts, "feedback_of": exp.get("feedback_of", ""), "mode": exp.get("mode") or "oneshot",
-            "es1": number(scores.get(ES_AT_1, scores.get(EXECUTION_SUCCESS))),
-            "attempts_used": number(scores.get(ATTEMPTS)),
-            "experiment_fields": exp, "scores": scores, "player_models": data.get("player_models"),
-        })
+        episodes.append(episode_row(game, exp, episode_dir, data))
     if not episodes:
         raise UserError(f"{results}: no scored SARTCo episodes (run `clem score -r {results}` first)")
     return episodes

@@ -21,7 +21,14 @@ LAYERS = [
     ("scores", ["sartco.scores"]),
     ("paper", ["sartco.paper"]),
     ("register", ["sartco.register"]),
-    ("clem", ["sartco.clem"]),
+    # sartco.clem: one package per thing it serves (sartco/clem/__init__.py); the games' own logic
+    # packages share a rank, so none of them imports another
+    ("clem core", ["sartco.clem.core"]),
+    ("clem players", ["sartco.clem.players"]),
+    ("clem games", ["sartco.clem.instruct", "sartco.clem.describe", "sartco.clem.paper"]),
+    ("clem tooling", ["sartco.clem.tooling"]),
+    # the files clemcore loads by path (backends/<name>_api.py; `sartco register` copies them)
+    ("clem backends", ["sartco.clem.backends"]),
     ("protocols", ["sartco.protocols"]),
     ("top", ["sartco.report", "sartco.instancegen", "sartco.cli", "sartco.__main__", "sartco.bench_execute", "games", "tools"]),
 ]
@@ -35,8 +42,8 @@ def package_of(module: str) -> str:
     for n in range(len(parts), 0, -1):
         if ".".join(parts[:n]) in RANK:
             return ".".join(parts[:n])
-    if module in ("sartco", "sartco.__init__"):
-        return "sartco.__init__"
+    if module in ("sartco", "sartco.__init__", "sartco.clem", "sartco.clem.__init__"):
+        return "sartco.__init__"  # the containers: their __init__ holds no code (test_containers_hold_no_code)
     raise AssertionError(f"module {module} belongs to no layer of tests/architecture/test_layers.py")
 
 
@@ -81,6 +88,16 @@ def edges() -> list[tuple[str, str, str]]:
 def test_every_module_has_a_layer():
     for module, _ in modules():
         package_of(module)
+
+
+def test_containers_hold_no_code():
+    """sartco/clem is only its packages: its __init__ is a docstring, and `from sartco.clem import x`
+    (a module by the container's name, which no layer would check) appears nowhere."""
+    tree = ast.parse((ROOT / "sartco/clem/__init__.py").read_text(encoding="utf-8"))
+    assert all(isinstance(node, ast.Expr) and isinstance(node.value, ast.Constant) for node in tree.body)
+    bare = [f"{path.relative_to(ROOT)}:{line}" for module, path in modules()
+            for line, name in imports_of(module, path) if name == "sartco.clem"]
+    assert not bare, "imports of the container sartco.clem (name the package):\n" + "\n".join(bare)
 
 
 def test_imports_point_down():

@@ -1,12 +1,12 @@
-"""The built-in players' answer sources (sartco.clem.answers, sartco.clem.dialogue_answers): what
+"""The built-in players' answer sources (sartco.clem.players.answers, sartco.clem.describe.dialogue_answers): what
 each answers turn by turn, and which one a player gets for a model name."""
 import pytest
 
 from play_helpers import REPO, scripted_episode
-from sartco.clem.answers import NO_CODE, GoldCode, InstructFollower, Scripted, instruct_answers
-from sartco.clem.dialogue import Dialogue, DialogueLog
-from sartco.clem.dialogue_answers import DescriberMock, DialogueFollower, builder_answers, describer_answers
-from sartco.clem.players import RULEBASED, fenced
+from sartco.clem.describe.dialogue_answers import DescriberMock, DialogueFollower, builder_answers, describer_answers
+from sartco.clem.describe.turns import Dialogue, DialogueLog
+from sartco.clem.players.answers import NO_CODE, GoldCode, InstructFollower, Scripted, instruct_answers
+from sartco.clem.players.sourced import RULEBASED, fenced
 
 TARGET = {"7:3": [["washer", "red"], ["nut", "blue"]]}
 GOLD = ["put(board, 'washer', 'red', 7, 3)", "put(board, 'nut', 'blue', 7, 3)"]
@@ -58,7 +58,8 @@ def test_describe_sources_read_what_was_said():
     describer = describer_answers("mock", episode, dialogue)
     assert isinstance(describer, DescriberMock)
     assert describer.answer(0) == f"Instruction: {episode['template_instruction']}"
-    dialogue.expect = "answer"
+    dialogue.instruct(episode["template_instruction"])
+    dialogue.ask("Which row?")
     assert describer.answer(1) == f"Answer: {episode['template_instruction']}"
     dialogue.instruction = episode["template_instruction"]
     assert isinstance(builder_answers("mock", episode, dialogue), DialogueFollower)

@@ -12,8 +12,8 @@ import time
 
 import pytest
 
-from sartco.clem import benchrun
-from sartco.clem.stub_server import StubServer, answer_table, conversation_key
+from sartco.clem.tooling import benchrun
+from sartco.clem.tooling.stub_server import StubServer, answer_table, conversation_key
 from sartco.report.harness_table import HARNESS_STATUS
 
 EXPERIMENTS = ["rb_so_repetition_template", "sb_so_first_order_template"]

@@ -8,10 +8,10 @@ import openai
 import pytest
 from clemcore.backends import ModelSpec
 
-from sartco.clem import benchrun
-from sartco.clem.batching import OpenAIBatchingBackend, retry_delay
-from sartco.clem.outcomes import NoAnswer
-from sartco.clem.stub_server import NO_CODE, StubServer, answer_table, conversation_key
+from sartco.clem.core.outcomes import NoAnswer
+from sartco.clem.tooling import benchrun
+from sartco.clem.tooling.batching import OpenAIBatchingBackend, retry_delay
+from sartco.clem.tooling.stub_server import NO_CODE, StubServer, answer_table, conversation_key
 
 TURNS = {f"Instruction {k}.": f"put(board, 'nut', 'red', {k}, 0)" for k in range(8)}
 

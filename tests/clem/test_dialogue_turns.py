@@ -1,5 +1,5 @@
-"""cobot_describe's dialogue on its own (sartco.clem.dialogue, sartco.clem.dialogue_answers): the
-labels of the new turns, the mock describer's corrections on every test board, the rule-based
+"""cobot_describe's dialogue on its own (sartco.clem.describe.dialogue, sartco.clem.describe.dialogue_answers): the
+labels of the new turns, the state machine of whose turn it is, the mock describer's corrections on every test board, the rule-based
 builder reading corrections."""
 from __future__ import annotations
 
@@ -8,9 +8,10 @@ import json
 import pytest
 
 from play_helpers import REPO
-from sartco.clem.dialogue import parse_builder_answer, parse_review, settings_of
-from sartco.clem.dialogue_answers import correction_text
-from sartco.clem.parsing import ParseError
+from sartco.clem.core.parsing import ParseError
+from sartco.clem.describe.dialogue import parse_builder_answer, parse_review, settings_of
+from sartco.clem.describe.dialogue_answers import correction_text
+from sartco.clem.describe.turns import BuilderTurn, Dialogue, DialogueLog, State
 from sartco.follower import emit
 from sartco.follower.correct import apply_correction, pieces
 from sartco.program import execute_many
@@ -21,7 +22,7 @@ FULL = REPO / "games" / "cobot_describe" / "in" / "instances.json"
 def test_parsers():
     clarify = settings_of({"name": "x", "mode": "clarify"})
     assert (clarify.questions, clarify.corrections) == (2, 0)
-    assert parse_builder_answer("**Question:** which row?", clarify, 0) == ("question", "which row?")
+    assert parse_builder_answer("**Question:** which row?", clarify, 0) == BuilderTurn.question("which row?")
     with pytest.raises(ParseError, match="past the limit"):
         parse_builder_answer("Question: which row?", clarify, 2)
     oneshot = settings_of({"name": "x"})
@@ -29,7 +30,8 @@ def test_parsers():
         parse_builder_answer("Question: which row?", oneshot, 0)
     # a label inside a code fence is part of the code: a comment is not a question
     code = "```python\n# Question: which row? the first\nput(board, 'nut', 'red', 0, 0)\n```"
-    assert parse_builder_answer(code, clarify, 0) == ("code", "# Question: which row? the first\nput(board, 'nut', 'red', 0, 0)")
+    assert parse_builder_answer(code, clarify, 0) == BuilderTurn.code(
+        "# Question: which row? the first\nput(board, 'nut', 'red', 0, 0)")
     assert parse_review("Done.") is None and parse_review("**Done**") is None
     assert parse_review("Correction: Place a red nut in the 1st row, 1st column.").startswith("Place a red nut")
     for bad in ("", "Looks good to me", "Correction:"):
@@ -77,3 +79,49 @@ def test_rule_based_builder_reads_corrections():
     for unreadable in ("That looks wrong.", "Place a nut in the 1st row, 1st column."):  # nothing / no colour
         with pytest.raises(FollowError):
             apply_correction(steps, unreadable)
+
+
+def record(error: str | None = None):
+    """A build record as the dialogue sees it (it reads only whether the answer held code)."""
+    from sartco.clem.core.building import build, parse_failure
+    target = {"0:0": [["nut", "red"]]}
+    return parse_failure(target, "no code") if error else build("put(board, 'nut', 'red', 0, 0)", target)
+
+
+def test_the_dialogue_moves_only_along_its_transitions():
+    d = Dialogue(DialogueLog("clarify_correct", 1, 1))
+    assert d.state is State.INSTRUCTION
+    with pytest.raises(RuntimeError, match="no move from instruction to"):
+        d.ask("Which row?")   # the builder cannot ask before the instruction
+    d.instruct("Put a red nut in the corner.")
+    d.ask("Which corner?")
+    assert d.state is State.ANSWER and d.left("question") == 0
+    with pytest.raises(RuntimeError):
+        d.build(record())     # the describer owes an answer first
+    d.answer("The top left one.")
+    d.build(record())         # a correction is left: the describer reviews
+    assert (d.state, d.answers) == (State.REVIEW, [])
+    d.correct("Remove the red nut in the 1st row, 1st column.")
+    assert (d.state, d.correction) == (State.BUILD, "Remove the red nut in the 1st row, 1st column.")
+    d.build(record())         # no correction left: over
+    assert d.state is State.OVER and d.correction is None
+    with pytest.raises(RuntimeError):
+        d.done()
+    assert [e["kind"] for e in d.log.events] == ["instruction", "question", "answer", "correction"]
+    assert (d.log.count("question"), d.log.count("correction"), d.log.describer_words) == (1, 1, 7 + 4 + 10)
+
+
+def test_a_build_without_code_is_not_reviewed_and_an_unreadable_describer_ends_or_skips_the_build():
+    d = Dialogue(DialogueLog("correct", 0, 3))
+    d.instruct("Put a red nut in the corner.")
+    d.build(record(error="parse_error"))
+    assert d.state is State.OVER   # corrections left, but nothing was built to review
+    d = Dialogue(DialogueLog("correct", 0, 3))
+    d.fail("no instruction")       # no board stands: the builder's turn is an empty build
+    assert d.state is State.BUILD and d.log.events[-1]["kind"] == "no_instruction"
+    d.build(record(error="parse_error"))
+    d = Dialogue(DialogueLog("correct", 0, 3))
+    d.instruct("Put a red nut in the corner.")
+    d.build(record())
+    d.fail("neither Done nor a correction")   # the board stands
+    assert d.state is State.OVER and d.log.events[-1]["kind"] == "no_review"

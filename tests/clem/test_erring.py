@@ -1,4 +1,4 @@
-"""The erring players (sartco.clem.erring, sartco.clem.erring_dialogue): their figures for the
+"""The erring players (sartco.clem.players.erring, sartco.clem.describe.erring_dialogue): their figures for the
 player seed 42 on a fixed slice, every kind of slip, and repairs that move toward the target."""
 from __future__ import annotations
 
@@ -8,10 +8,10 @@ from collections import Counter
 import pytest
 
 from play_helpers import GAMES, play
-from sartco.clem.answers import InstructFollower
-from sartco.clem.dialogue import Dialogue, DialogueLog
-from sartco.clem.erring import KINDS, SEED, ErringFollower, Slip, rng_for, slip_arrangement, slip_steps
-from sartco.clem.erring_dialogue import ErringDescriber, sentences
+from sartco.clem.describe.erring_dialogue import ErringDescriber, sentences
+from sartco.clem.describe.turns import Dialogue, DialogueLog
+from sartco.clem.players.answers import InstructFollower
+from sartco.clem.players.erring import KINDS, SEED, ErringFollower, Slip, rng_for, slip_arrangement, slip_steps
 from sartco.follower import FollowError
 from sartco.follower.parse import Arrangement, Placement, placements
 
@@ -141,7 +141,8 @@ def test_describer_garbles_and_omits_and_answers_with_the_missing_facts():
                     with pytest.raises(FollowError):
                         placements(sentence)
             seen.update(garbled=len(describer.garbled), omitted=len(describer.omitted))
-            describer.dialogue.expect = "answer"
+            describer.dialogue.instruct(said)
+            describer.dialogue.ask("Which row?")
             pending = list(describer.garbled)
             for sentence in pending:
                 assert describer.answer(1) == f"Answer: {sentence}"
@@ -169,7 +170,8 @@ def test_describer_drops_a_regular_boards_colour_list_and_answers_with_it():
             garbled += 1
             with pytest.raises(FollowError, match="no colours"):
                 arrange(said, episode["given_code"])
-            describer.dialogue.expect = "answer"
+            describer.dialogue.instruct(said)
+            describer.dialogue.ask("Which row?")
             answer = describer.answer(1).removeprefix("Answer: ")
             assert "colors: [" in answer and answer in episode["template_instruction"]
             assert arrange(f"{said} {answer}", episode["given_code"]) == arrange(episode["template_instruction"],

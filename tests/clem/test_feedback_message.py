@@ -1,10 +1,10 @@
-"""The one message a builder gets after a failed attempt (sartco.clem.feedback): execution facts
+"""The one message a builder gets after a failed attempt (sartco.clem.core.feedback): execution facts
 only, never the target; line numbers of the builder's own code; the experiment's attempts."""
 import pytest
 
 from feedback_cases import HOSTILE, PARTIAL, TARGET, WRONG, assert_no_target
-from sartco.clem.building import build
-from sartco.clem.feedback import feedback_for, feedback_message, max_attempts
+from sartco.clem.core.building import build
+from sartco.clem.core.feedback import feedback_for, feedback_message, max_attempts
 from sartco.world.render import grid_text
 
 

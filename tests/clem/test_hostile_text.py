@@ -8,9 +8,9 @@ from pathlib import Path
 
 import pytest
 
-from sartco.clem import benchrun
-from sartco.clem.players import fenced
-from sartco.clem.stub_server import StubServer, answer_table, conversation_key
+from sartco.clem.players.sourced import fenced
+from sartco.clem.tooling import benchrun
+from sartco.clem.tooling.stub_server import StubServer, answer_table, conversation_key
 from sartco.text import escape, exact_json
 
 EXPERIMENT = "rb_so_repetition_template"  # single-turn: one request per episode

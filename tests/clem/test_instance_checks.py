@@ -1,5 +1,5 @@
 """Bad instance files stop `clem run` before any model is asked, with one line naming the file,
-the experiment and the field, and exit code 2 (sartco.clem.benchmark); clemcore alone would log a
+the experiment and the field, and exit code 2 (sartco.clem.core.benchmark); clemcore alone would log a
 traceback and go on, or play "0 rows" of an unknown experiment and exit 0."""
 import json
 import shutil
@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from sartco.clem.benchmark import EPISODE_FIELDS, InstanceFileError, check_instances, clem_run_options
+from sartco.clem.core.benchmark import EPISODE_FIELDS, InstanceFileError, check_instances, clem_run_options
 
 REPO = Path(__file__).resolve().parents[2]
 GAME = REPO / "games" / "cobot_instruct"

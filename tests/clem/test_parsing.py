@@ -1,7 +1,7 @@
 """parse_code on answers as models really write them."""
 import pytest
 
-from sartco.clem.parsing import ParseError, parse_code
+from sartco.clem.core.parsing import ParseError, parse_code
 from sartco.world import ErrorCode
 
 PUT = "put(board, 'washer', 'red', 7, 3)"

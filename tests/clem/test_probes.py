@@ -1,4 +1,4 @@
-"""Function probes (sartco.clem.probes): the model's function, found by the documented rule, run at
+"""Function probes (sartco.clem.core.probes): the model's function, found by the documented rule, run at
 K held-out arguments in the sandbox and compared with the gold function's boards."""
 from __future__ import annotations
 
@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from sartco.clem.probes import DEFAULT_PROBES, NO_FUNCTION, probed, probed_function, run_probes, without_usage
+from sartco.clem.core.probes import DEFAULT_PROBES, NO_FUNCTION, probed, probed_function, run_probes, without_usage
 
 INSTANCES = Path(__file__).resolve().parents[2] / "games" / "cobot_instruct" / "in" / "instances.json"
 
@@ -42,7 +42,7 @@ bn(board, ('green', 'red'), 4, 3)"""
 
 
 def test_a_hard_coding_function_passes_es_and_fails_every_probe(optimal):
-    from sartco.clem.building import build_for
+    from sartco.clem.core.building import build_for
     assert build_for(optimal, HARD_CODED).es == 1
     result = run_probes(optimal, HARD_CODED)
     assert (result["function"], result["source"], result["share"]) == ("bn", "model", 0.0)
@@ -51,7 +51,7 @@ def test_a_hard_coding_function_passes_es_and_fails_every_probe(optimal):
 
 
 def test_a_general_function_passes_es_and_every_probe(optimal):
-    from sartco.clem.building import build_for
+    from sartco.clem.core.building import build_for
     assert build_for(optimal, GENERAL).es == 1
     result = run_probes(optimal, GENERAL)
     assert result["share"] == 1.0 and {p["category"] for p in result["probes"]} == {"success"}
@@ -61,7 +61,7 @@ def test_probe_arguments_are_held_out_valid_and_byte_identical_across_runs(optim
     a, b = run_probes(optimal, GENERAL), run_probes(optimal, GENERAL)
     assert json.dumps(a, sort_keys=True) == json.dumps(b, sort_keys=True)
     # another interpreter, another hash seed, no sandbox cache shared: the same bytes
-    script = ("import json, sys; from sartco.clem.probes import run_probes; "
+    script = ("import json, sys; from sartco.clem.core.probes import run_probes; "
               "ep, code = json.load(sys.stdin); print(json.dumps(run_probes(ep, code), sort_keys=True))")
     other = subprocess.run([sys.executable, "-c", script], input=json.dumps([optimal, GENERAL]), text=True,
                            capture_output=True, env={**os.environ, "PYTHONHASHSEED": "123"}, check=True, timeout=300)

@@ -5,8 +5,8 @@ import math
 
 from clemcore.clemgame.metrics import KEY_EPISODE_SCORES
 
-from sartco.clem.building import build
-from sartco.clem.scoring import BuildScorer
+from sartco.clem.core.building import build
+from sartco.clem.core.scoring import BuildScorer
 from sartco.episode import ATTEMPT_CATEGORIES, ATTEMPTS, ATTEMPTS_KEY, ES_AT_1, ES_AT_N, MAX_ATTEMPTS
 
 TARGET = {"0:0": [["washer", "red"]]}

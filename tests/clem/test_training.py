@@ -1,5 +1,5 @@
 """SARTCo as a training environment: the train split instance file and clemcore's gym env over
-it (sartco.clem.training), driven by a scripted policy: observations, rewards, info, episode ends."""
+it (sartco.clem.instruct.training), driven by a scripted policy: observations, rewards, info, episode ends."""
 import json
 from argparse import Namespace
 from pathlib import Path
@@ -7,7 +7,7 @@ from pathlib import Path
 import pytest
 
 from play_helpers import REPO
-from sartco.clem.training import gym_env
+from sartco.clem.instruct.training import gym_env
 from sartco.instancegen.command import generate
 from sartco.instancegen.options import DEFAULTS
 

@@ -1,8 +1,8 @@
-"""Messages in clemcore's transcripts (sartco.clem.transcript.display): code as code with its
+"""Messages in clemcore's transcripts (sartco.clem.core.transcript.display): code as code with its
 indentation, other text with its line breaks, model markup escaped."""
 import markdown
 
-from sartco.clem.transcript import display
+from sartco.clem.core.transcript import display
 
 
 def rendered(text: str) -> str:

@@ -1,5 +1,5 @@
 """Feedback (repair) experiments of cobot_instruct through clemcore's real loop: after a failed
-attempt the builder is told what the execution showed (sartco.clem.feedback) and may answer
+attempt the builder is told what the execution showed (sartco.clem.core.feedback) and may answer
 again with complete code, up to the experiment's `attempts`; ES@1 / ES@N / Attempts / Attempt
 Categories in scores.json; one picture per attempt; the target never reaches the builder."""
 import csv
@@ -12,7 +12,7 @@ import pytest
 
 from feedback_cases import GOLD, HOSTILE, NO_CODE, PARTIAL, TARGET, WRONG, WRONG_CATEGORY, assert_no_target
 from play_helpers import fence, scripted_episode, sh
-from sartco.clem.building import build
+from sartco.clem.core.building import build
 
 EXPERIMENT = {"name": "scripted_feedback", "board_type": "simple", "object_type": "simple", "task": "first_order",
               "source": "template", "split": "test", "ablation": None, "attempts": 3,

@@ -9,10 +9,10 @@ import json
 import pytest
 from harness_helpers import fake_worker, no_worker
 
-import sartco.clem.building as building
+import sartco.clem.core.building as building
 import sartco.scores as scores
-from sartco.clem.outcomes import NoAnswer
-from sartco.clem.players import SourcedPlayer
+from sartco.clem.core.outcomes import NoAnswer
+from sartco.clem.players.sourced import SourcedPlayer
 from sartco.program import pool
 from sartco.report import tables
 from sartco.report.harness_table import HARNESS_STATUS
@@ -121,7 +121,7 @@ def test_cobot_describe_records_a_harness_fault(play_episodes, monkeypatch, fres
 
 
 def no_answer_first(monkeypatch, reason: str) -> None:
-    """The first answer of the run is a NoAnswer (what sartco.clem.batching gives when the model
+    """The first answer of the run is a NoAnswer (what sartco.clem.tooling.batching gives when the model
     server never answered); every later answer is the player's own."""
     real, calls = SourcedPlayer._custom_response, []
 

@@ -5,9 +5,9 @@ import json
 
 import pytest
 
-from sartco.clem.completeness import INCOMPLETE_STATUS
-from sartco.clem.paper import experiment_fields, instance_fields
-from sartco.clem.transcript import display
+from sartco.clem.core.transcript import display
+from sartco.clem.paper.game import experiment_fields, instance_fields
+from sartco.clem.tooling.completeness import INCOMPLETE_STATUS
 from sartco.dataset import SHARED_DATA as DEFAULT_DATA
 
 pytestmark = pytest.mark.skipif(not (DEFAULT_DATA / "published").is_dir(), reason="shared data missing")

@@ -1,5 +1,5 @@
 """Function probes in played episodes: the scores in scores.json of cobot_instruct and
-cobot_describe episodes played through clemcore's real loop (sartco.clem.probes)."""
+cobot_describe episodes played through clemcore's real loop (sartco.clem.core.probes)."""
 import json
 
 from play_helpers import GAMES, fence

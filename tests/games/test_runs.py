@@ -107,7 +107,7 @@ def test_runs_of_different_instance_files_are_refused(tmp_path, uninterrupted):
 
 
 def test_run_json_keeps_no_secret():
-    from sartco.clem.provenance import without_secrets
+    from sartco.clem.core.provenance import without_secrets
     entry = {"model_name": "m", "backend": "openai_compatible", "api_key": "sk-1",
              "model_config": {"base_url": "http://x", "Authorization": "Bearer y", "headers": [{"x-api-token": "z"}]}}
     assert without_secrets(entry) == {"model_name": "m", "backend": "openai_compatible",

@@ -1,4 +1,4 @@
-"""The score card at the end of every transcript (sartco.clem.card), through clemcore's real loop:
+"""The score card at the end of every transcript (sartco.clem.core.card), through clemcore's real loop:
 a won, a lost (mismatch), an aborted (no code) and a hostile failing cobot_instruct episode, a
 cobot_describe dialogue (correct mode: ES by round) and a paper-protocol episode with one wrong
 turn (per-turn EM/CB/ES). The transcripts are made BEFORE `clem score` writes scores.json, and the
@@ -198,7 +198,7 @@ def test_a_harness_fault_has_its_card_and_its_meaning(play_episodes, monkeypatch
 
 
 def test_a_fault_of_the_card_loses_nothing(play_episodes, monkeypatch):
-    import sartco.clem.card as card
+    import sartco.clem.core.card as card
 
     def broken(*args):
         raise RuntimeError("the card broke")

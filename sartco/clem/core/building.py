@@ -1,0 +1,184 @@
+"""Run a builder's code through sartco.program and record what happened, as one JSON-able record.
+
+The game master calls `build_for(instance, ...)` (`build` with the instance's board fields) once
+per episode (or once per attempt in a repair experiment) and records each build with
+`record_build`: its board event for the transcript and, for the build the episode ends with
+(`final`), the record for the scorer and the game state (sartco.clem.core.outcomes). A build
+that the sandbox could not run (`harness_error`) raises HarnessFault from `build_for`: the
+master's harness guard (sartco.clem.core.harness) records it, never as the model's error. The
+scorer reads the record back with `BuildRecord.from_json`; it never executes anything.
+"""
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass, field, fields
+
+from sartco.episode import BUILD_KEY
+from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, SUCCESS_CATEGORY, ErrorCode, category_family
+from sartco.world.render import diff_svg, differing_cells
+
+from .outcomes import HarnessFault, set_attempts_outcome, set_share_outcome
+from .transcript import code_block, picture, text_block
+
+BOARD_EVENT = "board"               # the GM->GM event that shows target and built board
+PICTURE = "boards.svg"              # the final build's picture, beside interactions.json
+ATTEMPT_PICTURE = "boards_{}.svg"   # attempt 1, 2, ... (every episode has attempt 1)
+PICTURE_ALT = "target (left) and built board (right); differing cells framed; a stack's pieces bottom to top"
+# what the last step of an episode puts into clemcore's step info (the gym env's `info`): info key -> record field
+INFO_FIELDS = {"es": "es", "cell_f1": "f1", "error_category": "category", "puts": "puts"}
+
+
+@dataclass(frozen=True, slots=True)
+class BuildRecord:
+    builder_code: str                 # what the builder wrote (all turns joined)
+    program: str                      # what was executed: init_board + given code + builder code
+    ok: bool                          # the program ran to the end
+    error: str | None                 # ErrorCode value when the program failed (or parse_error)
+    message: str
+    cells: dict                       # the board built (so far, when the program failed)
+    target: dict
+    puts: int
+    es: int                           # 1 when cells == target and ok
+    category: str                     # error, mismatch category, or "success"
+    precision: float
+    recall: float
+    f1: float
+    rows: int = DEFAULT_ROWS
+    cols: int = DEFAULT_COLS
+    turn_codes: list = field(default_factory=list)  # one entry per builder turn
+
+    def to_json(self) -> dict:
+        return asdict(self)
+
+    def svg(self) -> str:
+        """The picture of target beside built board (differing cells framed), as SVG."""
+        return diff_svg(self.target, self.cells, self.rows, self.cols)
+
+    @classmethod
+    def from_json(cls, data: dict) -> "BuildRecord":
+        names = {f.name for f in fields(cls)}
+        return cls(**{k: v for k, v in data.items() if k in names})
+
+    @property
+    def family(self) -> str:
+        return category_family(self.category)
+
+    def summary(self) -> str:
+        """One line for transcripts: what happened and where. Derived from the target too (cells
+        that differ, P/R/F1): never send it to a player - sartco.clem.core.feedback is what a builder sees."""
+        if self.category == SUCCESS_CATEGORY:
+            return f"success: the target was built ({self.puts} puts)"
+        if self.error in (ErrorCode.PARSE_ERROR, ErrorCode.HARNESS_ERROR):
+            return f"{self.error}: {self.message}"
+        diff = len(differing_cells(self.target, self.cells))
+        detail = f" - {self.message}" if self.message else ""
+        return (f"{self.category} ({self.family}){detail}; {self.puts} puts, {diff} cells differ, "
+                f"cell P/R/F1 {self.precision:.2f}/{self.recall:.2f}/{self.f1:.2f}")
+
+
+def compose_program(builder_code: str, *, given_code: str = "", rows: int = DEFAULT_ROWS,
+                    cols: int = DEFAULT_COLS) -> str:
+    """The program executed for an episode: the given code (e.g. the object function of a
+    repetition task), a fresh board, then the builder's code - the paper's total_code layout."""
+    parts = [given_code.strip()] if given_code.strip() else []
+    parts.append(f"board = init_board({rows}, {cols})")
+    parts.append(builder_code.strip())
+    return "\n".join(parts) + "\n"
+
+
+def build(builder_code: str, target: dict, *, given_code: str = "", rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS,
+          turn_codes: list[str] | None = None) -> BuildRecord:
+    """Execute the builder's code on a fresh board and compare it with the target."""
+    from sartco.program import execute, judge  # the only place model-written code runs
+
+    program = compose_program(builder_code, given_code=given_code, rows=rows, cols=cols)
+    ex = execute(program, rows=rows, cols=cols)
+    cmp = judge(ex.ok, ex.error, ex.cells, target)
+    error = None if ex.error is None else str(ErrorCode(ex.error))  # sartco.program: set whenever not ok
+    es = int(cmp.es)
+    category = SUCCESS_CATEGORY if es else str(ErrorCode(cmp.category))  # the error unless the program ran
+    return BuildRecord(
+        builder_code=builder_code, program=program, ok=bool(ex.ok), error=error, message=ex.message or "",
+        cells=ex.cells, target=target, puts=int(ex.puts), es=es, category=category,
+        precision=float(cmp.precision), recall=float(cmp.recall), f1=float(cmp.f1),
+        rows=rows, cols=cols, turn_codes=list(turn_codes or [builder_code]),
+    )
+
+
+def parse_failure(target: dict, message: str, *, turn_codes: list[str] | None = None,
+                  rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS,
+                  error: ErrorCode = ErrorCode.PARSE_ERROR) -> BuildRecord:
+    """The record of an episode aborted because an answer held no code (or, with
+    error=HARNESS_ERROR, because the harness failed): nothing was executed."""
+    code = "\n".join(turn_codes or [])
+    return BuildRecord(
+        builder_code=code, program="", ok=False, error=str(error), message=message,
+        cells={}, target=target, puts=0, es=0, category=str(error),
+        precision=0.0, recall=0.0, f1=0.0, rows=rows, cols=cols, turn_codes=list(turn_codes or []),
+    )
+
+
+def build_for(instance: dict, builder_code: str, turn_codes: list[str] | None = None) -> BuildRecord:
+    """`build` with the target, given code and board size of a game instance (the fields of
+    sartco.clem.core.episodes.board_fields); HarnessFault when the sandbox failed (harness_error)."""
+    record = build(builder_code, instance["target"], given_code=instance["given_code"],
+                   rows=instance["rows"], cols=instance["cols"], turn_codes=turn_codes)
+    if record.error == ErrorCode.HARNESS_ERROR:
+        raise HarnessFault(f"sandbox: {record.message}")
+    return record
+
+
+def parse_failure_for(instance: dict, message: str, turn_codes: list[str] | None = None,
+                      error: ErrorCode = ErrorCode.PARSE_ERROR) -> BuildRecord:
+    """`parse_failure` with the target and board size of a game instance."""
+    return parse_failure(instance["target"], message, turn_codes=turn_codes,
+                         rows=instance["rows"], cols=instance["cols"], error=error)
+
+
+def build_answers(instance: dict, answers: list[str]) -> BuildRecord:
+    """Our build of a dialogue's answers: the code sartco.clem.core.parsing finds in each, joined and run
+    once; the first answer without code makes it a parse failure (nothing executed)."""
+    from .parsing import ParseError, parse_code
+
+    codes = []
+    for answer in answers:
+        try:
+            codes.append(parse_code(answer))
+        except ParseError as error:
+            return parse_failure_for(instance, error.reason or "no code found", turn_codes=codes)
+    return build_for(instance, "\n".join(codes), turn_codes=codes)
+
+
+def record_build(game_master, attempts: list[BuildRecord], *, final: bool, shown: bool = False,
+                 instance: dict | None = None, share: float | None = None) -> None:
+    """The one way a game master records a build: `attempts` are the episode's builds so far in
+    order, the newest last.
+
+    The newest build's board event (for the transcript, unless `shown`: logged when it was made):
+    outcome line, the executed program as code and the picture of target and built board, inside
+    the event so it shows whenever the transcript is made, linked to its full-size file
+    ATTEMPT_PICTURE (attempt = its position), which `clem score` writes beside interactions.json
+    (sartco.clem.core.pictures).
+    `final`: the episode's result is the newest build. Record it for the scorer (BUILD_KEY), probe
+    its function (with the episode's `instance`, sartco.clem.core.probes), move the game state to
+    the outcome of the attempts (or, for the paper protocol, to the `share` of turns that succeeded)
+    and hand ES, cell F1, category and puts to clemcore's step info (what a gym env's `info` and
+    reward function see, sartco.clem.instruct.training)."""
+    from .probes import log_probes
+
+    record = attempts[-1]
+    if not shown:
+        program = code_block(record.program) if record.program else text_block("(none: nothing was built)")
+        content = "\n\n".join([text_block(record.summary()), text_block("executed program:"), program,
+                                picture(record.svg(), ATTEMPT_PICTURE.format(len(attempts)), PICTURE_ALT)])
+        game_master.log_event("GM", "GM", {"type": BOARD_EVENT, "content": content,
+                                           "category": record.category})
+    if not final:
+        return
+    game_master.log_key(BUILD_KEY, record.to_json())
+    if instance is not None:
+        log_probes(game_master, instance, record)
+    if share is None:
+        set_attempts_outcome(game_master.state, [a.category for a in attempts])
+    else:
+        set_share_outcome(game_master.state, share)
+    game_master.info.update({key: getattr(record, name) for key, name in INFO_FIELDS.items()})

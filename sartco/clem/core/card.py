@@ -1,0 +1,160 @@
+"""The score card at the end of every transcript (`ScoreCard`, the first base of both game masters).
+
+When an episode ends (clemcore's `log_game_end`, also after a harness fault) the game master runs
+the game's own scorer (`scorer_class`, the very class `clem score` uses: sartco.clem.core.benchmark)
+on a copy of its own interactions record, exactly as `clem score` will read it from
+interactions.json, and logs the result as a last GM->GM event of type "score card". So the card
+is in the transcript whether `clem score` runs before or after `clem transcribe`, and its numbers
+are those of scores.json: one computation, no metric computed twice in two ways.
+
+The card shows: the verdict (won / lost / aborted, from Success / Lose / Aborted) and the outcome
+line of the final build; Main Score; ES; cell F1 with P and R; the error category, its family and
+its meaning in plain words (sartco.world.category_meaning); the harness's reason for a
+harness_error; EM and CodeBLEU where the scorer computed them; puts; for the paper protocol its
+EM / CB / ES and the same per turn; for dialogues ES by round; then every other score of the game.
+Each value is a `<span class="sartco-value" data-score=NAME data-value=JSON>` (a per-turn value
+also data-round=K, its key under scores.json's "round scores") holding the value
+as scores.json has it (JSON, NaN as NaN) and shown rounded to 4 significant digits, "n/a" for
+NaN. Every text is escaped (sartco.text.escape, then HTML).
+
+The record the card is computed from is a second clemcore GameInteractionsRecorder registered on
+the game master after setup, i.e. when clemcore registers the one that writes interactions.json
+(clemcore's public `register`): it sees the same events, keys and request counts.
+"""
+from __future__ import annotations
+
+import html
+import json
+import math
+
+from clemcore.clemgame import metrics
+from clemcore.clemgame.recorder import GameInteractionsRecorder
+
+from sartco.episode import (BUILD_KEY, CELL_F1, CELL_PRECISION, CELL_RECALL, CODEBLEU, ERROR_CATEGORY, ERROR_FAMILY,
+                            EXACT_MATCH, EXECUTION_SUCCESS, HARNESS_REASON, MARKDOWN_KEY, PAPER_SCORES, PUTS,
+                            ROUND_PREFIX)
+from sartco.text import escape
+from sartco.world import category_meaning
+
+from .building import BuildRecord
+from .harness import fault_reason
+from .transcript import text_block
+
+CARD_EVENT = "score card"
+VERDICTS = ((metrics.METRIC_SUCCESS, "won"), (metrics.METRIC_LOSE, "lost"), (metrics.METRIC_ABORTED, "aborted"))
+FRAMEWORK = {metrics.METRIC_REQUEST_COUNT, metrics.METRIC_REQUEST_COUNT_PARSED, metrics.METRIC_REQUEST_COUNT_VIOLATED,
+             metrics.METRIC_REQUEST_SUCCESS_RATIO, metrics.METRIC_ABORTED, metrics.METRIC_SUCCESS, metrics.METRIC_LOSE}
+SHOWN_FIRST = (metrics.BENCH_SCORE, EXECUTION_SUCCESS, CELL_F1, CELL_PRECISION, CELL_RECALL, ERROR_CATEGORY,
+               ERROR_FAMILY, HARNESS_REASON, EXACT_MATCH, CODEBLEU, PUTS, *PAPER_SCORES.values())
+VERDICT_COLOURS = {"won": "#1a7f37", "lost": "#cf222e", "aborted": "#57606a", "unknown": "#57606a"}
+# the card's message is wider than clemcore's other GM->GM messages, its labels stay on one line
+CARD_STYLE = ("<style>.msg:has(.sartco-card) {margin-left: 5%; margin-right: 5%; font-size: 0.9rem} "
+              ".sartco-card {margin: 4px 0; padding: 8px 12px; border: 2px solid #444; border-radius: 6px; "
+              "background: #fff} .sartco-card th {white-space: nowrap} .sartco-card th, .sartco-card td "
+              "{text-align: left; padding: 2px 12px 2px 0; vertical-align: top}</style>")
+
+
+def card_scores(scorer_class, game_name: str, experiment: dict, instance: dict, interactions: dict) -> dict:
+    """What `clem score` writes to scores.json for this record: the game's scorer on the record as
+    it is read back from interactions.json (a JSON round trip)."""
+    scorer = scorer_class(game_name, {k: v for k, v in experiment.items() if k != "game_instances"}, instance)
+    scorer.compute_scores(json.loads(json.dumps(interactions)))
+    return scorer.scores
+
+
+def shown(value) -> str:
+    """A score as the card shows it: 4 significant digits, n/a for NaN or a missing value."""
+    if value is None or (isinstance(value, float) and math.isnan(value)):
+        return "n/a"
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return format(value, ".4g")
+    return escape(str(value))
+
+
+def value(name: str, scores: dict, label: str | None = None, round_idx=None) -> str:
+    """One score as a span carrying its exact scores.json value (JSON) and its shown form (a round
+    score: with the round's index as scores.json's "round scores" keys it)."""
+    v = scores.get(name)
+    where = "" if round_idx is None else f' data-round="{int(round_idx)}"'
+    return (f'<span class="sartco-value" data-score="{html.escape(name)}"{where} '
+            f'data-value="{html.escape(json.dumps(v))}">'
+            f"{html.escape((label or '') + shown(v), quote=False)}</span>")
+
+
+def _row(label: str, cell: str) -> str:
+    return f'<tr><th>{html.escape(label)}</th><td>{cell}</td></tr>'
+
+
+def card_html(scores: dict, outcome_line: str | None) -> str:
+    """The card of an episode's scores (clemcore's scores dict: "episode scores", "round scores")."""
+    ep, rounds = scores.get(metrics.KEY_EPISODE_SCORES, {}), scores.get(metrics.KEY_ROUND_SCORES, {})
+    verdict = next((word for key, word in VERDICTS if ep.get(key)), "unknown")
+    paper = any(name in ep for name in PAPER_SCORES.values())
+    ours = " (ours: the whole program)" if paper else ""  # the paper protocol's Main Score is 100 x its ES
+    rows = [_row("Main Score" + (" (100 x paper ES)" if paper else ""), value(metrics.BENCH_SCORE, ep)),
+            _row(f"ES (execution success){ours}", value(EXECUTION_SUCCESS, ep))]
+    if CELL_F1 in ep:
+        rows.append(_row("Cell F1 (P / R)", f"{value(CELL_F1, ep)} ({value(CELL_PRECISION, ep, 'P ')} / "
+                                            f"{value(CELL_RECALL, ep, 'R ')})"))
+    category = ep.get(ERROR_CATEGORY)
+    if category is not None:
+        try:
+            meaning = category_meaning(category)
+        except ValueError:
+            meaning = "an unknown category."
+        rows.append(_row("Error category", f"{value(ERROR_CATEGORY, ep)} ({value(ERROR_FAMILY, ep)}): "
+                                           f'<span class="sartco-meaning">{html.escape(meaning)}</span>'))
+    for name, label in ((HARNESS_REASON, "Harness failure"), (EXACT_MATCH, f"EM (exact match){ours}"),
+                        (CODEBLEU, f"CodeBLEU{ours}"), (PUTS, "Puts")):
+        if name in ep:
+            rows.append(_row(label, value(name, ep)))
+    if paper:
+        rows.append(_row("Paper protocol (share of turns)",
+                         " / ".join(value(n, ep, f"{n.split()[1]} ") for n in PAPER_SCORES.values())))
+    by_round = sorted((n for n in ep if n.startswith(ROUND_PREFIX)), key=lambda n: int(n[len(ROUND_PREFIX):]))
+    if by_round:
+        rows.append(_row("ES by round (after k corrections)",
+                         " · ".join(value(n, ep, f"round {n[len(ROUND_PREFIX):]}: ") for n in by_round)))
+    for name in ep:
+        if name not in FRAMEWORK and name not in SHOWN_FIRST and name not in by_round:
+            rows.append(_row(name, value(name, ep)))
+    colour = VERDICT_COLOURS[verdict]
+    parts = [f'{CARD_STYLE}<div class="sartco-card"><div><b>Score card</b>: '
+             f'<span class="sartco-verdict" style="font-weight: bold; color: {colour}">{verdict}</span></div>']
+    if outcome_line:
+        parts.append(f'<div class="sartco-outcome">{html.escape(escape(outcome_line), quote=False)}</div>')
+    parts.append(f'<table class="sartco-scores">{"".join(rows)}</table>')
+    turns = [(k, rounds[k]) for k in sorted(rounds, key=int) if PAPER_SCORES["em"] in rounds[k]]
+    if turns:
+        head = "".join(f'<th>{html.escape(n.split()[1])}</th>' for n in PAPER_SCORES.values())
+        body = "".join(f'<tr data-turn="{int(k) + 1}"><td>{int(k) + 1}</td>'
+                       + "".join(f'<td>{value(n, turn, round_idx=k)}</td>' for n in PAPER_SCORES.values())
+                       + "</tr>" for k, turn in turns)
+        parts.append(f'<table class="sartco-turns"><tr><th>paper turn</th>{head}</tr>{body}</table>')
+    return "".join(parts) + "</div>"
+
+
+class ScoreCard:
+    """First base of a game master: logs the score card when the episode ends. The game master
+    class names its scorer in `scorer_class` (the benchmark scores with the same class)."""
+    scorer_class = None
+
+    def setup(self, **instance):
+        super().setup(**instance)
+        self.card_instance = instance
+        self.card_record = GameInteractionsRecorder(self.game_spec.game_name, self.experiment.get("name"),
+                                                    instance.get("game_id"), "", {})
+        self.register(self.card_record)  # from here on it sees what clemcore's own recorder sees
+
+    def log_game_end(self, auto_count_logging: bool = True):
+        super().log_game_end(auto_count_logging)
+        try:
+            interactions = self.card_record.interactions
+            scores = card_scores(self.scorer_class, self.game_spec.game_name, self.experiment, self.card_instance,
+                                 interactions)
+            record = interactions.get(BUILD_KEY)
+            content = card_html(scores, BuildRecord.from_json(record).summary() if record else None)
+        except Exception as exc:  # a fault of the card never loses the episode
+            content = text_block(f"no score card: {fault_reason('score card', exc)}")
+        self.log_key(MARKDOWN_KEY, True)
+        self.log_event(from_="GM", to="GM", action={"type": CARD_EVENT, "content": content})

@@ -1,0 +1,82 @@
+"""Harness faults are never the model's error: the one place per path where they are caught.
+
+A harness fault is anything the model did not cause: the model server gave no answer (the
+backend's retries given up: a `NoAnswer`, sartco.clem.tooling.batching), the sandbox could not run the
+program or gave no usable answer (ErrorCode.HARNESS_ERROR from sartco.program, raised as HarnessFault by
+sartco.clem.core.building.build_for and sartco.clem.paper.game.finish_paper), or the game master or the
+scorer raised. Such an episode is recorded with its reason and counts as not played:
+- playing (`HarnessGuard`, the first base of both game masters): an exception in a step ends the
+  episode at once with a `harness_error` build record (its reason as the message) under
+  BUILD_KEY, a board event for the transcript, Aborted 1 (clemcore: not played) and the
+  interactions.json written as usual; a `NoAnswer` answer takes the same path before the game
+  master sees it (the turn's messages and the request logged as clemcore's step logs them; no parse);
+- scoring (`sartco.clem.core.scoring.BuildScorer.compute_scores`, every scorer's base): an exception
+  replaces the episode's scores with `harness_scores`: Main Score and the build scores NaN,
+  Aborted 1, Error Category harness_error, its reason under HARNESS_REASON.
+`sartco report` counts these episodes apart (harness.md) and exits with status 3.
+"""
+from __future__ import annotations
+
+import math
+import traceback
+from pathlib import Path
+
+from clemcore.clemgame import metrics
+
+from sartco.episode import BUILD_SCORES, ERROR_CATEGORY, ERROR_FAMILY, HARNESS_REASON, PUTS
+from sartco.program.execution import clean
+from sartco.world import ErrorCode
+
+from .building import parse_failure_for, record_build
+from .outcomes import HarnessFault, NoAnswer, log_outcome
+
+REASON_CHARS = 500
+HARNESS = ErrorCode.HARNESS_ERROR
+
+
+def fault_reason(where: str, exc: BaseException) -> str:
+    """One clean line: where the harness failed and why (a HarnessFault: its own reason; any
+    other exception: its type, text and the harness line that raised it)."""
+    if isinstance(exc, HarnessFault):
+        text = exc.reason
+    else:
+        frames = traceback.extract_tb(exc.__traceback__)
+        at = f" at {Path(frames[-1].filename).name}:{frames[-1].lineno}" if frames else ""
+        text = f"{where}: {type(exc).__name__}: {exc}{at}"
+    return clean(text)[:REASON_CHARS]
+
+
+class HarnessGuard:
+    """First base of a game master: a step that raises ends the episode as harness_error."""
+
+    def setup(self, **instance):
+        self.harness_instance = instance  # the target and board size of the record of a fault
+        super().setup(**instance)
+
+    def step(self, response):
+        try:
+            if isinstance(response, NoAnswer):  # the model server gave none: the model is not charged
+                self.log_gm_to_player(self.get_context_for(self.current_player), self.current_player)
+                self.log_player_to_gm(response, self.current_player)  # as clemcore's step: the turn's
+                self.count_request()                                  # messages, a request (not parsed)
+                raise HarnessFault(response.reason)
+            return super().step(response)
+        except Exception as exc:  # a fault of the game master or the sandbox, never the model's
+            record = parse_failure_for(self.harness_instance, fault_reason("game master", exc), error=HARNESS)
+            record_build(self, [record], final=True)
+            log_outcome(self)
+            self.log_game_end()
+            return True, {}
+
+
+def harness_scores(scorer, reason: str) -> None:
+    """Replace an episode's game scores by those of a harness fault (clemcore's request counts stay)."""
+    scores = scorer.scores[metrics.KEY_EPISODE_SCORES]
+    kept = {name: scores[name] for name in (metrics.METRIC_REQUEST_COUNT, metrics.METRIC_REQUEST_COUNT_PARSED,
+                                            metrics.METRIC_REQUEST_COUNT_VIOLATED, metrics.METRIC_REQUEST_SUCCESS_RATIO)
+            if name in scores}
+    scores.clear()
+    scores.update(kept)
+    scores.update({metrics.METRIC_ABORTED: 1, metrics.METRIC_SUCCESS: 0, metrics.METRIC_LOSE: 0,
+                   **dict.fromkeys(BUILD_SCORES, math.nan), ERROR_CATEGORY: str(HARNESS),
+                   ERROR_FAMILY: HARNESS.family, PUTS: 0, HARNESS_REASON: reason, metrics.BENCH_SCORE: math.nan})

@@ -1,0 +1,178 @@
+"""Function probes: does the model's function build its object anywhere, in any colours, or only
+where the episode's usage line puts it?
+
+After an optimal_function or repetition episode's own build (both games' protocol and the paper
+protocol, sartco.clem.core.building.record_build, final build), the function the
+answer's usage line or loop calls is run on K fresh boards at K held-out arguments, and each
+board is compared with the gold function's board at the same arguments.
+
+The function (`probed_function`): the first call, in source order, in the answer's top-level
+statements (inside loops, ifs and try blocks, never inside a def or class body) of a name that a
+top-level `def` of the program (the given code, then the answer; the answer's def wins, as when
+the program runs) defines, with `board` as its first argument (or `board=`). The gold function
+is found by the same rule in the gold program. A repetition answer that calls the given function
+without redefining it probes the given function (`Probe Function` says whose it is).
+
+The probe program (`probe_program`): the given code, the answer without its usage statements
+(the top-level statements that call the function), a fresh `board = init_board(rows, cols)`,
+then `f(board, [colours], x, y)` - the signature (board, colors, x, y) every prompt gives.
+
+The arguments (`draw_arguments`): candidates drawn by random.Random(f"{seed}/{board_id}/{task}")
+(seed PROBE_SEED): an anchor anywhere on the board and one colour per piece of the object (its
+combo name has one letter per piece); a candidate is kept when the gold function builds at it
+without error, no piece lies directly on a piece of its colour, and its board differs from the
+episode's target (so never the episode's own arguments) and from the kept ones. K (instance
+field `probes`, default DEFAULT_PROBES; 0 turns the probes off), the first kept in draw order,
+from rounds of CANDIDATES x K candidates (ROUNDS at most). Every program runs in the sandbox
+(sartco.program.execute_many): one batch per round of gold candidates (mostly one), one for the
+K probes; a harness_error raises HarnessFault.
+
+sequence_function episodes are not probed: their gold function (and the prompt's examples)
+hard-code the puts and ignore the arguments by the task's design, so there is no general gold
+function to compare with; first-order episodes have no function.
+"""
+from __future__ import annotations
+
+import ast
+import random
+
+from sartco.episode import PROBES_KEY
+from sartco.world import COLORS, SUCCESS_CATEGORY, ErrorCode
+
+from .outcomes import HarnessFault
+
+PROBED_TASKS = ("optimal_function", "repetition")
+DEFAULT_PROBES = 8
+PROBE_SEED = 0
+CANDIDATES = 2                 # candidates drawn per probe wanted, per round
+ROUNDS = 8                     # rounds of candidates at most (about half are kept; under a quarter for tall stacks)
+NO_FUNCTION = "no_function"    # a probe's category when the answer calls no function of the program
+
+
+def probed(instance: dict) -> bool:
+    """True for an episode whose function is probed."""
+    return instance.get("task") in PROBED_TASKS and int(instance.get("probes", DEFAULT_PROBES)) > 0
+
+
+def _top_defs(tree: ast.Module) -> set[str]:
+    return {s.name for s in tree.body if isinstance(s, (ast.FunctionDef, ast.AsyncFunctionDef))}
+
+
+def _calls(node: ast.AST):
+    """Calls in source order, not descending into def, lambda or class bodies."""
+    if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda)):
+        return
+    if isinstance(node, ast.Call):
+        yield node
+    for child in ast.iter_child_nodes(node):
+        yield from _calls(child)
+
+
+def _passes_board(call: ast.Call) -> bool:
+    first = call.args[0] if call.args else next((k.value for k in call.keywords if k.arg == "board"), None)
+    return isinstance(first, ast.Name) and first.id == "board"
+
+
+def _parse(code: str) -> ast.Module | None:
+    try:
+        return ast.parse(code)
+    except (SyntaxError, ValueError):
+        return None
+
+
+def probed_function(code: str, given_code: str = "") -> str | None:
+    """The name of the function `code`'s usage calls (module doc), None when it calls none."""
+    tree, given = _parse(code), _parse(given_code) or ast.Module(body=[], type_ignores=[])
+    if tree is None:
+        return None
+    defined = _top_defs(tree) | _top_defs(given)
+    for statement in tree.body:
+        for call in _calls(statement):
+            if isinstance(call.func, ast.Name) and call.func.id in defined and _passes_board(call):
+                return call.func.id
+    return None
+
+
+def without_usage(code: str, name: str) -> str:
+    """`code` without its top-level statements that call `name` (the usage line or loop)."""
+    tree = _parse(code)
+    lines = code.splitlines()
+    drop = set()
+    for s in tree.body if tree else []:
+        if any(isinstance(c.func, ast.Name) and c.func.id == name for c in _calls(s)):
+            drop.update(range(s.lineno - 1, s.end_lineno))
+    return "\n".join(line for i, line in enumerate(lines) if i not in drop)
+
+
+def probe_program(code: str, name: str, args: dict, *, given_code: str, rows: int, cols: int) -> str:
+    parts = [given_code.strip(), without_usage(code, name).strip(), f"board = init_board({rows}, {cols})",
+             f"{name}(board, {list(args['colors'])!r}, {args['x']}, {args['y']})"]
+    return "\n".join(p for p in parts if p) + "\n"
+
+
+def combo_of(instance: dict) -> str:
+    """The object's combo name: the episode's combo_name, or the paper sample's 4th part."""
+    return instance.get("combo_name") or instance["sample"].split("/")[3]
+
+
+def _plain_colours(cells: dict) -> bool:
+    return all(a[1] != b[1] for stack in cells.values() for a, b in zip(stack, stack[1:]))
+
+
+def draw_arguments(instance: dict, gold: str, name: str, k: int, seed: int = PROBE_SEED) -> list[tuple[dict, dict]]:
+    """Up to k (arguments, gold board) pairs (module doc), the same for a seed on every run:
+    rounds of CANDIDATES x k candidates, one sandbox batch each, until k are kept (ROUNDS at most)."""
+    from sartco.program import execute_many
+
+    rows, cols, n = instance["rows"], instance["cols"], len(combo_of(instance))
+    rng = random.Random(f"{seed}/{instance['board_id']}/{instance['task']}")
+    kept, boards = [], [instance["target"]]
+    for _ in range(ROUNDS):
+        candidates = [{"colors": [rng.choice(COLORS) for _ in range(n)], "x": rng.randrange(rows),
+                       "y": rng.randrange(cols)} for _ in range(CANDIDATES * k)]
+        runs = execute_many([probe_program(gold, name, a, given_code=instance["given_code"], rows=rows, cols=cols)
+                             for a in candidates], rows, cols)
+        for args, ex in zip(candidates, runs):
+            if ex.error == ErrorCode.HARNESS_ERROR:
+                raise HarnessFault(f"sandbox (gold probe): {ex.message}")
+            if ex.ok and _plain_colours(ex.cells) and ex.cells not in boards and len(kept) < k:
+                kept.append((args, ex.cells))
+                boards.append(ex.cells)
+        if len(kept) == k:
+            break
+    return kept
+
+
+def run_probes(instance: dict, code: str, seed: int = PROBE_SEED) -> dict:
+    """The probes of one answer: {"function", "source", "gold_function", "probes": [{"colors", "x",
+    "y", "category", "message"}], "share"} (share: probes built exactly / probes)."""
+    from sartco.program import execute_many, judge
+
+    given, rows, cols = instance["given_code"], instance["rows"], instance["cols"]
+    k = int(instance.get("probes", DEFAULT_PROBES))
+    gold_name = probed_function(instance["gold_code"], given)
+    if gold_name is None:
+        raise HarnessFault("probes: the gold program calls no function")
+    draws = draw_arguments(instance, instance["gold_code"], gold_name, k, seed)
+    name = probed_function(code, given)
+    source = None if name is None else ("model" if name in _top_defs(_parse(code)) else "given")
+    probes = [{**args, "category": NO_FUNCTION, "message": "the answer calls no function"} for args, _ in draws]
+    if name is not None:
+        runs = execute_many([probe_program(code, name, a, given_code=given, rows=rows, cols=cols)
+                             for a, _ in draws], rows, cols)
+        for probe, (_, gold_cells), ex in zip(probes, draws, runs):
+            if ex.error == ErrorCode.HARNESS_ERROR:
+                raise HarnessFault(f"sandbox (probe): {ex.message}")
+            verdict = judge(ex.ok, ex.error, ex.cells, gold_cells)
+            probe["category"] = SUCCESS_CATEGORY if verdict.es else str(ErrorCode(verdict.category))
+            probe["message"] = ex.message or ""
+    built = sum(p["category"] == SUCCESS_CATEGORY for p in probes)
+    return {"function": name, "source": source, "gold_function": gold_name, "probes": probes,
+            "share": built / len(probes) if probes else None}
+
+
+def log_probes(game_master, instance: dict, record) -> None:
+    """Probe a finished episode's build `record` (sartco.clem.core.building.BuildRecord) and record it
+    under PROBES_KEY: probed episodes only, and only when the answer held code to run."""
+    if probed(instance) and record.error != ErrorCode.PARSE_ERROR:
+        game_master.log_key(PROBES_KEY, run_probes(instance, record.builder_code))

@@ -1,0 +1,127 @@
+"""The scorer shared by the games that end in a build: turns the recorded build into numbers.
+
+Episode scores (scores.json):
+  Main Score         100 x execution success; NaN when the episode was aborted (no code found)
+  Execution Success  0/1 (NaN when aborted), as the paper's ES
+  Exact Match        0/1, whitespace-normalised, against the gold code of the same style (NaN when aborted)
+  CodeBLEU           0..1, codebleu weights 0.25 x 4, against the same gold code (NaN when aborted)
+  Cell Precision / Cell Recall / Cell F1   of the built board against the target (NaN when aborted)
+  Error Category     "success", an ErrorCode value (python/world/sandbox error or mismatch), "parse_error"
+                     or "harness_error" (the harness failed, not the model: aborted, sartco.clem.core.harness)
+  Error Family       success | parse | python | world | sandbox | mismatch | harness
+  Harness Error      why the harness failed (harness_error episodes only)
+  Puts               pieces placed by the executed program
+Aborted / Success / Lose come from the game's own log (sartco.clem.core.outcomes.log_outcome).
+
+Feedback experiments (experiment field `attempts` N > 1, sartco.clem.core.feedback) add:
+  ES@1               execution success of the first attempt (0/1; NaN when aborted)
+  ES@N               execution success of the last attempt (= Execution Success)
+  Attempts           attempts used (1..N)
+  Max Attempts       N
+  Attempt Categories the category of each attempt in order, joined by "," (a string, like
+                     Error Category: clem eval keeps it in raw.csv and uses only Main Score/Aborted)
+The other scores (and Main Score = 100 x final ES) are those of the last attempt. A last
+attempt without code after attempts with code is lost, not aborted: ES/EM/CodeBLEU/cell scores 0.
+
+Probed episodes (optimal_function and repetition, sartco.clem.core.probes) add:
+  Function Generalisation  share of the K probes built exactly (NaN when aborted or not probed)
+  Probe Categories   each probe's category in order ("success", an ErrorCode value or
+                     "no_function"), joined by ","
+  Probe Function     whose function was probed: "model", "given" (a repetition answer calling the
+                     given function) or "none"
+"""
+from __future__ import annotations
+
+from clemcore.clemgame import GameScorer, metrics
+
+from sartco.episode import (ATTEMPT_CATEGORIES, ATTEMPTS, ATTEMPTS_KEY, BUILD_KEY, BUILD_SCORES, CATEGORY_SEPARATOR,
+                            CELL_F1, CELL_PRECISION, CELL_RECALL, CODEBLEU, ERROR_CATEGORY, ERROR_FAMILY, ES_AT_1,
+                            ES_AT_N, EXACT_MATCH, EXECUTION_SUCCESS, FUNCTION_GENERALISATION, HARNESS_REASON,
+                            MAX_ATTEMPTS, PROBE_CATEGORIES, PROBE_FUNCTION, PROBES_KEY, PUTS)
+from sartco.world import ErrorCode, category_family
+
+from .building import BuildRecord
+from .feedback import max_attempts
+from .harness import fault_reason, harness_scores
+from .probes import probed
+
+NAN = float("nan")
+
+
+class BuildScorer(GameScorer):
+    """The scores of an episode's recorded build, against the episode's gold code."""
+
+    def compute_scores(self, interactions: dict) -> None:
+        """clemcore's scoring, unchanged, inside the one guard of every scorer of ours: an exception
+        makes the episode a harness_error (sartco.clem.core.harness), never a model's score or a lost
+        scores.json."""
+        try:
+            super().compute_scores(interactions)
+        except Exception as exc:  # a fault of the scorer, never the model's
+            harness_scores(self, fault_reason("scorer", exc))
+
+    def compute_round_score(self, round_idx, round_events) -> None:
+        pass  # the build is judged once, at the end of the episode
+
+    def compute_episode_scores(self, interactions: dict) -> None:
+        from sartco.scores import code_bleu, exact_match
+
+        aborted = bool(interactions.get(metrics.METRIC_ABORTED, 0))
+        data = interactions.get(BUILD_KEY)
+        record = BuildRecord.from_json(data) if data else None
+        self.log_attempt_scores(interactions, record, aborted)
+        self.log_probe_scores(interactions, aborted)
+        if aborted or record is None:
+            for name in BUILD_SCORES:
+                self.log_episode_score(name, NAN)
+            category = record.category if record else str(ErrorCode.PARSE_ERROR)
+            self.log_episode_score(ERROR_CATEGORY, category)
+            self.log_episode_score(ERROR_FAMILY, category_family(category))
+            if category == ErrorCode.HARNESS_ERROR:
+                self.log_episode_score(HARNESS_REASON, record.message)
+            self.log_episode_score(PUTS, 0)
+            self.log_episode_score(metrics.BENCH_SCORE, NAN)
+            return
+        gold = self.game_instance["gold_code"]
+        no_code = record.error == ErrorCode.PARSE_ERROR  # a feedback episode's last answer held no code
+        self.log_episode_score(EXECUTION_SUCCESS, int(record.es))
+        self.log_episode_score(EXACT_MATCH, 0 if no_code else int(exact_match(record.builder_code, gold)))
+        self.log_episode_score(CODEBLEU, 0.0 if no_code else float(code_bleu(record.builder_code, gold)))
+        self.log_episode_score(CELL_PRECISION, record.precision)
+        self.log_episode_score(CELL_RECALL, record.recall)
+        self.log_episode_score(CELL_F1, record.f1)
+        self.log_episode_score(ERROR_CATEGORY, record.category)
+        self.log_episode_score(ERROR_FAMILY, record.family)
+        self.log_episode_score(PUTS, record.puts)
+        self.log_episode_score(metrics.BENCH_SCORE, self.bench_score(interactions, record))
+
+    def bench_score(self, interactions: dict, record: BuildRecord) -> float:
+        """Main Score of a played episode: 100 x execution success of the build."""
+        return 100.0 * record.es
+
+    def log_probe_scores(self, interactions: dict, aborted: bool) -> None:
+        """Function Generalisation, Probe Categories, Probe Function - probed episodes only
+        (sartco.clem.core.probes); FG is NaN when the episode was aborted or nothing was probed."""
+        if not probed(self.game_instance):
+            return
+        probes = None if aborted else interactions.get(PROBES_KEY)
+        share = probes["share"] if probes else None
+        self.log_episode_score(FUNCTION_GENERALISATION, NAN if share is None else float(share))
+        self.log_episode_score(PROBE_CATEGORIES, CATEGORY_SEPARATOR.join(
+            p["category"] for p in (probes or {}).get("probes", [])))
+        self.log_episode_score(PROBE_FUNCTION, (probes or {}).get("source") or "none")
+
+    def log_attempt_scores(self, interactions: dict, final: BuildRecord | None, aborted: bool) -> None:
+        """ES@1, ES@N, Attempts, Max Attempts, Attempt Categories - only in feedback experiments
+        (the experiment allows more than one attempt: sartco.clem.core.feedback.max_attempts)."""
+        n = max_attempts(self.experiment)
+        if n <= 1:
+            return
+        attempts = [BuildRecord.from_json(a) for a in interactions.get(ATTEMPTS_KEY) or []]
+        if not attempts and final is not None:
+            attempts = [final]
+        self.log_episode_score(ES_AT_1, NAN if aborted or not attempts else int(attempts[0].es))
+        self.log_episode_score(ES_AT_N, NAN if aborted or not attempts else int(attempts[-1].es))
+        self.log_episode_score(ATTEMPTS, len(attempts))
+        self.log_episode_score(MAX_ATTEMPTS, n)
+        self.log_episode_score(ATTEMPT_CATEGORIES, CATEGORY_SEPARATOR.join(a.category for a in attempts))

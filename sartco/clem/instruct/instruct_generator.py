@@ -1,0 +1,41 @@
+"""The base of cobot_instruct's instance generators (sartco.instancegen.instruct and
+sartco.clem.instruct.fresh): one experiment per cell, with or without execution feedback, and its episodes
+from board records, each with its in-context examples."""
+from __future__ import annotations
+
+from sartco.clem.core.episodes import instruct_episode
+from sartco.clem.core.instance_values import InstanceGenerator
+from sartco.dataset import BoardKind
+from sartco.episode import InstructExperiment
+from sartco.instances.examples import select_examples
+from sartco.instances.prompts import SECTIONS
+
+FEEDBACK_SUFFIX = "_feedback"
+
+
+class InstructGenerator(InstanceGenerator):
+
+    def __init__(self, game_dir: str, feedback_attempts: int | None = None):
+        """feedback_attempts: None for the paper's experiments; N >= 2 for the feedback experiments
+        (the Table 3 cells only, named <cell>_feedback, N attempts per episode)."""
+        super().__init__(game_dir)
+        self.feedback_attempts = feedback_attempts
+
+    def experiment(self, name: str, kind: BoardKind, task: str, source: str, split: str, dataset: dict,
+                   ablation: dict | None = None, **extra):
+        """extra: more experiment fields (before game_instances)."""
+        feedback = {}
+        if self.feedback_attempts is not None:
+            feedback = {"attempts": self.feedback_attempts, "feedback_of": name}
+            name += FEEDBACK_SUFFIX
+        exp = self.add_experiment(name)
+        exp.update(InstructExperiment(board_type=kind.board, object_type=kind.object, task=task, source=source,
+                                      split=split, ablation=ablation, **feedback, dataset=dataset), **extra)
+        exp.move_to_end("game_instances")
+        return exp
+
+    def add_episodes(self, exp, items, task, source, pool, seed, k, sections=SECTIONS):
+        for game_id, record in enumerate(items):
+            examples = select_examples(record, pool, k, seed) if "examples" in sections else []
+            inst = self.add_game_instance(exp, game_id)
+            inst.update(instruct_episode(record, task, source, examples, sections))
