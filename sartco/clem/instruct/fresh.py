@@ -42,20 +42,20 @@ class FreshInstanceGenerator(InstructGenerator):
         first N boards of each cell (None: all)."""
         published_dir = self.source = published_dir or DEFAULT_PUBLISHED
         manifest, files = load_dataset(dataset_dir)
-        pub_manifest, pub_files = load_dataset(published_dir)
         if "config" not in manifest:
             raise UserError(f"{dataset_dir / 'manifest.json'}: no 'config' (the fresh boards follow the config "
                             f"of a dataset written by `sartco generate`)")
+        for train in (kind.dataset_file("train") for kind, *_ in self.cells):
+            if train not in files:
+                raise UserError(f"{dataset_dir / train}: missing (the in-context examples come from its train split)")
+        pub_manifest, pub_files = load_dataset(published_dir)
         config = parse_config(manifest["config"], str(dataset_dir / "manifest.json"))
         fresh, report = fresh_boards(config, fresh_seed, pub_files, board_keys(pub_files, files))
         where = {"published": shown(published_dir), "generated": shown(dataset_dir)}
         self.instances["dataset"] = {**where, "fresh_seed": fresh_seed, "generator_seed": seed,
                                      "n_examples": n_examples}
         for kind, task, *_ in self.cells:
-            name, train = kind.dataset_file("test"), kind.dataset_file("train")
-            if train not in files:
-                raise UserError(f"{dataset_dir / train}: missing (the in-context examples come from its train split)")
-            pool = files[train]
+            name, pool = kind.dataset_file("test"), files[kind.dataset_file("train")]
             for boards, records in (("published", pub_files.get(name, [])), ("fresh", fresh.get(name, []))):
                 dataset = {"version": pub_manifest["version"] if boards == "published" else f"fresh{fresh_seed}",
                            "source": boards, "seed": fresh_seed if boards == "fresh" else None, **where,
