@@ -44,11 +44,11 @@ MIN_WIDTH = 250     # the narrowest a transcript shows a picture: a one-player b
 MIN_LABEL = 11      # px
 GAP = 24            # between the two grids
 MARK = "#e0007a"    # the frame of a cell that differs between target and built board
-SANS = 'font-family="sans-serif"'
 
 
 def _text(x: float, y: float, text: str, anchor: str = "middle") -> str:
-    return f'<text x="{x:g}" y="{y:g}" {SANS} font-size="{FONT}" text-anchor="{anchor}">{escape(text)}</text>'
+    """A label (its font family is the picture's, set once on the <svg>)."""
+    return f'<text x="{x:g}" y="{y:g}" font-size="{FONT}" text-anchor="{anchor}">{escape(text)}</text>'
 
 
 def _piece_svg(shape: str, color: str, x: float, y: float, w: float, h: float) -> str:
@@ -86,16 +86,21 @@ def _label_width(rows: int) -> float:
 
 def _grid_svg(cells: Cells, rows: int, cols: int, ox: float, title: str, marked: set[str]) -> list[str]:
     """One grid with its title, column numbers above and row numbers left, 1-based as the
-    instructions count them ("the 8th row, 4th column")."""
+    instructions count them ("the 8th row, 4th column"). The cells are one grey square crossed by
+    one path of lines (not a square per cell: a transcript embeds every picture, and clemcore's
+    HTML and LaTeX transcripts read each character of it)."""
     gx, gy = ox + _label_width(rows), 2 * FONT + 16
     out = [_text(gx + cols * CELL / 2, FONT, title)]
     out += [_text(gx + c * CELL + CELL / 2, 2 * FONT + 8, str(c + 1)) for c in range(cols)]
     out += [_text(gx - 6, gy + r * CELL + CELL / 2 + FONT * .35, str(r + 1), "end") for r in range(rows)]
+    lines = "".join(f"M{gx:g} {gy + r * CELL:g}h{cols * CELL}" for r in range(rows + 1))
+    lines += "".join(f"M{gx + c * CELL:g} {gy:g}v{rows * CELL}" for c in range(cols + 1))
+    out += [f'<rect x="{gx:g}" y="{gy:g}" width="{cols * CELL}" height="{rows * CELL}" fill="#f7f7f7"/>',
+            f'<path d="{lines}" stroke="#999" fill="none"/>']
     frames = []
     for r in range(rows):
         for c in range(cols):
             x, y = gx + c * CELL, gy + r * CELL
-            out.append(f'<rect x="{x:g}" y="{y:g}" width="{CELL}" height="{CELL}" fill="#f7f7f7" stroke="#999"/>')
             out += _stack_svg(cells.get(f"{r}:{c}", []), x, y)
             if f"{r}:{c}" in marked:  # drawn last: on top of bridges reaching over the border
                 frames.append(f'<rect x="{x + 1.5:g}" y="{y + 1.5:g}" width="{CELL - 3}" height="{CELL - 3}" fill="none" stroke="{MARK}" stroke-width="3"/>')
@@ -131,6 +136,7 @@ def diff_svg(target: Cells, built: Cells, rows: int = DEFAULT_ROWS, cols: int = 
     height = grids_h + 2 * FONT + 34
     body = (_grid_svg(target, rows, cols, 0, "target", marked) + _grid_svg(built, rows, cols, grid_w + GAP, "built", marked)
             + _legend_svg(grids_h + FONT + 8))
-    return (f'<svg xmlns="http://www.w3.org/2000/svg" width="{width:g}" height="{height:g}" viewBox="0 0 {width:g} {height:g}">'
+    return (f'<svg xmlns="http://www.w3.org/2000/svg" width="{width:g}" height="{height:g}" viewBox="0 0 {width:g} {height:g}" '
+            f'font-family="sans-serif">'
             + "".join(body) + "</svg>")
 
