@@ -1,6 +1,6 @@
-"""Where sartco finds things: the one module that knows the package's own folder, the checkout it may
-run from, the data folder and the folders that ship with the package. Free of sartco imports (the
-bottom layer, beside sartco.dataset).
+"""Where sartco finds things and what it may spend: the one module that knows the package's own
+folder, the checkout it may run from, the data folder and the folders that ship with the package,
+and every default budget. Free of sartco imports (the bottom layer, beside sartco.dataset).
 
     PACKAGE      sartco/ itself (site-packages/sartco in a wheel install)
     CHECKOUT     the source checkout the package runs from (an editable install: the folder holding
@@ -18,6 +18,10 @@ bottom layer, beside sartco.dataset).
                  `sartco register DIR` makes clemcore find them in DIR (sartco.register)
     workspace()  the folder relative defaults are read from (instances/v1, instances/published,
                  games/): the checkout, else the working directory
+
+and every default budget (below "Budgets"): what one program may spend in the sandbox, how many
+attempts, questions, corrections and function probes an episode has unless its instance file
+says otherwise, and how long the batching backend waits for a model server.
 
 setup.py copies resources/ and the game files into the package when it builds a wheel; an editable
 install reads them in the checkout.
@@ -84,8 +88,6 @@ def _first_dir(*candidates: Path | None) -> Path:
     return found[0] if found else next(c for c in candidates if c is not None)
 
 
-
-
 def resources_dir() -> Path:
     """RESOURCES (read when asked, so that $SARTCO_RESOURCES set by a caller counts)."""
     given = os.environ.get(ENV_RESOURCES)
@@ -106,3 +108,27 @@ def workspace() -> Path:
 def shown(path: Path) -> str:
     """A path as instance files and run records write it: relative to the workspace."""
     return os.path.relpath(path, workspace())
+
+
+# Budgets: the defaults; an instance file's field, an experiment's field or a model entry's
+# setting, where it has one, takes precedence (the modules named say which).
+# One program in the sandbox (sartco.program.Limits): steps (loop iterations, calls, comprehension
+# items), call depth, the longest sequence a checked operation may create, the largest integer in
+# bits, wall seconds (the worker is killed), bytes of address space the worker may add, source characters
+SANDBOX_STEPS = 1_000_000
+SANDBOX_DEPTH = 200
+SANDBOX_LENGTH = 1_000_000
+SANDBOX_INT_BITS = 65_536
+SANDBOX_WALL_TIME = 2.0
+SANDBOX_MEMORY = 512 * 1024 * 1024
+SANDBOX_SOURCE = 100_000
+# An episode (instance and experiment fields; sartco.clem.core.feedback, .probes, sartco.clem.describe.dialogue)
+ATTEMPTS = 1                 # builds per episode without feedback (1 = the paper's protocol)
+FEEDBACK_ATTEMPTS = 3        # builds per episode in the feedback experiments (`sartco instances --attempts`)
+PROBES = 8                   # held-out arguments a probed function is called at (instance field `probes`)
+QUESTIONS = 2                # clarification questions of the modes that clarify (experiment field `questions`)
+CORRECTIONS = 3              # describer's corrections of the modes that correct (experiment field `corrections`)
+# A model server, per model (the batching backend, sartco.clem.tooling.batching; a model entry's
+# "batching" settings take precedence): requests in flight, retries after a failed try, seconds
+# before the first retry (doubling), seconds per try, seconds of retrying per request at most
+MODEL_SERVER = {"concurrency": 16, "retries": 5, "backoff": 1.0, "timeout": 120.0, "retry_budget": 600.0}

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from sartco import settings
 from sartco.text import one_line
 from sartco.world import ErrorCode
 
@@ -33,13 +34,13 @@ class Limits:
     source      characters of source text
     """
 
-    steps: int = 1_000_000
-    depth: int = 200
-    length: int = 1_000_000
-    int_bits: int = 65_536
-    wall_time: float = 2.0
-    memory: int = 512 * 1024 * 1024
-    source: int = 100_000
+    steps: int = settings.SANDBOX_STEPS          # the defaults: sartco.settings, "Budgets"
+    depth: int = settings.SANDBOX_DEPTH
+    length: int = settings.SANDBOX_LENGTH
+    int_bits: int = settings.SANDBOX_INT_BITS
+    wall_time: float = settings.SANDBOX_WALL_TIME
+    memory: int = settings.SANDBOX_MEMORY
+    source: int = settings.SANDBOX_SOURCE
 
     def as_list(self) -> list:
         return [self.steps, self.depth, self.length, self.int_bits, self.wall_time, self.memory, self.source]

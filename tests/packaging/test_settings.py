@@ -52,3 +52,24 @@ def test_the_data_option_points_anywhere(tmp_path):
     by_env = sartco(*args, env_data=str(link), cwd=tmp_path)
     assert default.returncode == by_option.returncode == by_env.returncode == 0, by_option.stderr
     assert default.stdout == by_option.stdout == by_env.stdout and default.stdout.count("\n") == 260
+
+
+def test_every_default_budget_is_the_settings_one():
+    """One place for budgets: the sandbox's limits, an episode's attempts, probes, questions and
+    corrections, and the batching backend's waits are sartco.settings' values where they apply."""
+    from dataclasses import asdict
+
+    from sartco.clem.core.feedback import max_attempts
+    from sartco.clem.core.probes import DEFAULT_PROBES
+    from sartco.clem.describe.dialogue import settings_of
+    from sartco.clem.tooling.batching import DEFAULTS
+    from sartco.instancegen.options import DEFAULTS as GENERATION
+    from sartco.program.execution import Limits
+
+    assert asdict(Limits()) == {name.removeprefix("SANDBOX_").lower(): getattr(settings, name)
+                                for name in dir(settings) if name.startswith("SANDBOX_")}
+    assert max_attempts({"name": "e"}) == settings.ATTEMPTS and GENERATION["attempts"] == settings.FEEDBACK_ATTEMPTS
+    assert DEFAULT_PROBES == settings.PROBES
+    dialogue = settings_of({"name": "e", "mode": "clarify_correct"})
+    assert (dialogue.questions, dialogue.corrections) == (settings.QUESTIONS, settings.CORRECTIONS)
+    assert {k: DEFAULTS[k] for k in settings.MODEL_SERVER} == settings.MODEL_SERVER

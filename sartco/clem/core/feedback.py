@@ -15,10 +15,11 @@ from __future__ import annotations
 
 import re
 
+from sartco import settings
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, ErrorCode
 from sartco.world.render import grid_text
 
-ATTEMPTS_FIELD = "attempts"  # experiment field: attempts per episode, the first included (default 1)
+ATTEMPTS_FIELD = "attempts"  # experiment field: attempts per episode, the first included (default settings.ATTEMPTS)
 
 
 def max_attempts(experiment: dict) -> int:
@@ -26,7 +27,7 @@ def max_attempts(experiment: dict) -> int:
     one rule for the game master and the scorer (the report reads the scorer's Max Attempts)."""
     value = experiment.get(ATTEMPTS_FIELD)
     if value is None:
-        return 1
+        return settings.ATTEMPTS
     if isinstance(value, bool) or not isinstance(value, int) or value < 1:
         raise ValueError(f"experiment {experiment.get('name')!r}: field {ATTEMPTS_FIELD!r} must be an integer >= 1, "
                          f"not {value!r}")

@@ -36,13 +36,14 @@ from __future__ import annotations
 import ast
 import random
 
+from sartco import settings
 from sartco.episode import PROBES_KEY
 from sartco.world import COLORS, SUCCESS_CATEGORY, ErrorCode
 
 from .outcomes import HarnessFault
 
 PROBED_TASKS = ("optimal_function", "repetition")
-DEFAULT_PROBES = 8
+DEFAULT_PROBES = settings.PROBES
 PROBE_SEED = 0
 CANDIDATES = 2                 # candidates drawn per probe wanted, per round
 ROUNDS = 8                     # rounds of candidates at most (about half are kept; under a quarter for tall stacks)

@@ -30,6 +30,7 @@ from dataclasses import dataclass
 
 from clemcore.clemgame import metrics
 
+from sartco import settings
 from sartco.clem.core.building import BuildRecord
 from sartco.clem.core.feedback import BOARD_FORM
 from sartco.clem.core.parsing import ParseError, parse_code
@@ -44,7 +45,7 @@ from .turns import BuilderTurn, DialogueLog
 
 MODES = DIALOGUE_MODES
 MODE_FIELD, QUESTIONS_FIELD, CORRECTIONS_FIELD = "mode", "questions", "corrections"
-DEFAULT_QUESTIONS, DEFAULT_CORRECTIONS = 2, 3
+DEFAULT_QUESTIONS, DEFAULT_CORRECTIONS = settings.QUESTIONS, settings.CORRECTIONS
 
 _QUESTION = label(r"questions?")
 _ANSWER = label(r"answers?")

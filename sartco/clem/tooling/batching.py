@@ -39,6 +39,7 @@ from clemcore.backends import BatchGenerativeModel, ModelSpec
 from clemcore.backends.openai_api import OpenAI, OpenAIModel
 from clemcore.backends.utils import augment_response_object, ensure_messages_format
 
+from sartco.settings import MODEL_SERVER
 from sartco.clem.core.outcomes import NO_ANSWER, NoAnswer
 
 from .response_cache import ResponseCache
@@ -46,7 +47,7 @@ from .response_cache import ResponseCache
 log = logging.getLogger(__name__)
 
 KEY_NAME = "openai_compatible"   # the same key.json entry as clemcore's openai_compatible backend
-DEFAULTS = {"concurrency": 16, "retries": 5, "backoff": 1.0, "timeout": 120.0, "retry_budget": 600.0, "cache": None}
+DEFAULTS = {**MODEL_SERVER, "cache": None}   # a model entry's model_config overrides these (sartco.settings)
 MAX_DELAY = 60.0                 # seconds, the longest wait between two tries
 RETRIED = (openai.RateLimitError, openai.InternalServerError, openai.APIConnectionError)  # 429, 5xx, network, timeout
 
