@@ -47,8 +47,9 @@ MARK = "#e0007a"    # the frame of a cell that differs between target and built 
 
 
 def _text(x: float, y: float, text: str, anchor: str = "middle") -> str:
-    """A label (its font family is the picture's, set once on the <svg>)."""
-    return f'<text x="{x:g}" y="{y:g}" font-size="{FONT}" text-anchor="{anchor}">{escape(text)}</text>'
+    """A label (its font family and the anchor "middle" are the picture's, set once on the <svg>)."""
+    where = "" if anchor == "middle" else f' text-anchor="{anchor}"'
+    return f'<text x="{x:g}" y="{y:g}" font-size="{FONT}"{where}>{escape(text)}</text>'
 
 
 def _piece_svg(shape: str, color: str, x: float, y: float, w: float, h: float) -> str:
@@ -84,11 +85,13 @@ def _label_width(rows: int) -> float:
     return FONT * .6 * len(str(rows)) + 10
 
 
-def _grid_svg(cells: Cells, rows: int, cols: int, ox: float, title: str, marked: set[str]) -> list[str]:
+def _grid_svg(cells: Cells, rows: int, cols: int, ox: float, title: str, marked: set[str],
+              stacks: dict[tuple, str]) -> list[str]:
     """One grid with its title, column numbers above and row numbers left, 1-based as the
-    instructions count them ("the 8th row, 4th column"). The cells are one grey square crossed by
-    one path of lines (not a square per cell: a transcript embeds every picture, and clemcore's
-    HTML and LaTeX transcripts read each character of it)."""
+    instructions count them ("the 8th row, 4th column"). Kept small, because a transcript embeds
+    every picture and clemcore's HTML and LaTeX transcripts read each character of it: the cells
+    are one grey square crossed by one path of lines, and each stack is drawn once (`stacks`:
+    its pieces -> the id of its drawing, for the <defs>) and placed in its cells by <use>."""
     gx, gy = ox + _label_width(rows), 2 * FONT + 16
     out = [_text(gx + cols * CELL / 2, FONT, title)]
     out += [_text(gx + c * CELL + CELL / 2, 2 * FONT + 8, str(c + 1)) for c in range(cols)]
@@ -101,7 +104,9 @@ def _grid_svg(cells: Cells, rows: int, cols: int, ox: float, title: str, marked:
     for r in range(rows):
         for c in range(cols):
             x, y = gx + c * CELL, gy + r * CELL
-            out += _stack_svg(cells.get(f"{r}:{c}", []), x, y)
+            stack = tuple(tuple(piece) for piece in cells.get(f"{r}:{c}", []))
+            if stack:
+                out.append(f'<use href="#{stacks.setdefault(stack, f"s{len(stacks)}")}" x="{x:g}" y="{y:g}"/>')
             if f"{r}:{c}" in marked:  # drawn last: on top of bridges reaching over the border
                 frames.append(f'<rect x="{x + 1.5:g}" y="{y + 1.5:g}" width="{CELL - 3}" height="{CELL - 3}" fill="none" stroke="{MARK}" stroke-width="3"/>')
     return out + frames
@@ -134,9 +139,11 @@ def diff_svg(target: Cells, built: Cells, rows: int = DEFAULT_ROWS, cols: int = 
     grid_w = _label_width(rows) + cols * CELL
     width, grids_h = 2 * grid_w + GAP + 2, 2 * FONT + 16 + rows * CELL
     height = grids_h + 2 * FONT + 34
-    body = (_grid_svg(target, rows, cols, 0, "target", marked) + _grid_svg(built, rows, cols, grid_w + GAP, "built", marked)
-            + _legend_svg(grids_h + FONT + 8))
+    stacks: dict[tuple, str] = {}
+    body = (_grid_svg(target, rows, cols, 0, "target", marked, stacks)
+            + _grid_svg(built, rows, cols, grid_w + GAP, "built", marked, stacks) + _legend_svg(grids_h + FONT + 8))
+    defs = "".join(f'<g id="{ref}">{"".join(_stack_svg(list(stack), 0, 0))}</g>' for stack, ref in stacks.items())
     return (f'<svg xmlns="http://www.w3.org/2000/svg" width="{width:g}" height="{height:g}" viewBox="0 0 {width:g} {height:g}" '
-            f'font-family="sans-serif">'
-            + "".join(body) + "</svg>")
+            f'font-family="sans-serif" text-anchor="middle">'
+            + (f"<defs>{defs}</defs>" if defs else "") + "".join(body) + "</svg>")
 
