@@ -129,6 +129,6 @@ PROBES = 8                   # held-out arguments a probed function is called at
 QUESTIONS = 2                # clarification questions of the modes that clarify (experiment field `questions`)
 CORRECTIONS = 3              # describer's corrections of the modes that correct (experiment field `corrections`)
 # A model server, per model (the batching backend, sartco.clem.tooling.batching; a model entry's
-# "batching" settings take precedence): requests in flight, retries after a failed try, seconds
+# model_config takes precedence): requests in flight, retries after a failed try, seconds
 # before the first retry (doubling), seconds per try, seconds of retrying per request at most
 MODEL_SERVER = {"concurrency": 16, "retries": 5, "backoff": 1.0, "timeout": 120.0, "retry_budget": 600.0}

@@ -38,10 +38,9 @@ fi
 # a step: the command with its results folder and the checkout's own paths taken out
 python3 - "$OUT/base.times" "$OUT/new.times" <<'EOF'
 import re, sys
-from collections import OrderedDict
 
 def load(path):
-    steps = OrderedDict()
+    steps = {}
     for line in open(path):
         parts = line.split(None, 3)
         if len(parts) < 4 or not re.match(r"^[\d.]+$", parts[0]):

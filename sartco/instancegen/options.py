@@ -4,16 +4,15 @@ from __future__ import annotations
 
 import argparse
 
-from sartco.clem.describe.dialogue import DEFAULT_CORRECTIONS, DEFAULT_QUESTIONS
+from sartco import settings
 from sartco.errors import UserError
 from sartco.instances.examples import MAX_EXAMPLES
-from sartco import settings
 from sartco.settings import workspace
 
 MAX_SEED = 2**32 - 1  # numpy's: clemcore seeds numpy with it
-DEFAULTS = dict(dataset=workspace() / "instances" / "v1", seed=42, examples=5, ablation_episodes=10, smoke=2, attempts=settings.FEEDBACK_ATTEMPTS,
-                published=None, paper_data=None, describers=None, fresh=None, fresh_episodes=0, train_episodes=0,
-                questions=DEFAULT_QUESTIONS, corrections=DEFAULT_CORRECTIONS, slice=None)
+DEFAULTS = dict(dataset=workspace() / "instances" / "v1", seed=42, examples=5, ablation_episodes=10, smoke=2,
+                attempts=settings.FEEDBACK_ATTEMPTS, published=None, paper_data=None, describers=None, fresh=None, fresh_episodes=0, train_episodes=0,
+                questions=settings.QUESTIONS, corrections=settings.CORRECTIONS, slice=None)
 
 # (option, least value, greatest value); every mode's namespace holds every option (DEFAULTS)
 BOUNDS = [("seed", 0, MAX_SEED), ("examples", 0, MAX_EXAMPLES), ("ablation_episodes", 1, None), ("smoke", 1, None),

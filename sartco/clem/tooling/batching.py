@@ -39,8 +39,8 @@ from clemcore.backends import BatchGenerativeModel, ModelSpec
 from clemcore.backends.openai_api import OpenAI, OpenAIModel
 from clemcore.backends.utils import augment_response_object, ensure_messages_format
 
-from sartco.settings import MODEL_SERVER
 from sartco.clem.core.outcomes import NO_ANSWER, NoAnswer
+from sartco.settings import MODEL_SERVER
 
 from .response_cache import ResponseCache
 
