@@ -44,32 +44,43 @@ def dialogue_case():
 
 
 class Card(HTMLParser):
-    """The card's values (data-score -> (data-value, shown text)), meaning and outcome texts."""
+    """What the card holds: its exact values (data-scores, data-turns), its rows of text (label ->
+    shown value), the paper turn table's cells, the outcome and verdict texts, every element id."""
 
     def __init__(self):
         super().__init__()
-        self.values, self.texts, self.stack, self.ids = {}, {}, [], set()
+        self.data, self.turns, self.rows, self.turn_rows = None, None, {}, []
+        self.texts, self.stack, self.ids = {}, [], set()
 
     def handle_starttag(self, tag, attrs):
         attrs = dict(attrs)
         self.ids.add(attrs.get("id"))
-        key = attrs.get("data-score") or attrs.get("class")
-        if tag == "span" and "data-score" in attrs:
-            key = attrs["data-score"] + (f"#{attrs['data-round']}" if "data-round" in attrs else "")
-            self.values.setdefault(key, []).append([attrs["data-value"], ""])
-        self.stack.append(key if key in ("sartco-meaning", "sartco-outcome", "sartco-verdict") or "data-score" in attrs
-                          else None)
+        if "data-scores" in attrs and self.data is None:
+            self.data = json.loads(attrs["data-scores"])
+        if "data-turns" in attrs:
+            self.turns = json.loads(attrs["data-turns"])
+        if tag == "tr":
+            self.turn_rows.append([])
+        self.stack.append(attrs.get("class") or tag)
 
     def handle_endtag(self, tag):
         if self.stack:
             self.stack.pop()
 
     def handle_data(self, data):
-        key = next((k for k in reversed(self.stack) if k), None)
-        if key in self.values:
-            self.values[key][-1][1] += data
-        elif key:
-            self.texts[key] = self.texts.get(key, "") + data
+        where = self.stack[-1] if self.stack else None
+        if where == "td":
+            self.turn_rows[-1].append(data)
+        elif where in ("sartco-outcome", "sartco-verdict"):
+            self.texts[where] = self.texts.get(where, "") + data
+        elif where == "div" and "sartco-scores" in self.stack:  # a row: its label, then the value in a column
+            label, _, value = data.partition("  ")
+            self.rows[label] = value.strip()
+
+    def row(self, label: str) -> str:
+        """The value shown in the row whose label starts with `label`."""
+        [value] = [v for k, v in self.rows.items() if k.startswith(label)]
+        return value
 
 
 def card_of(html: str) -> Card:
@@ -80,29 +91,44 @@ def card_of(html: str) -> Card:
 
 
 def same(a, b) -> bool:
+    if isinstance(a, dict) and isinstance(b, dict):
+        return a.keys() == b.keys() and all(same(a[k], b[k]) for k in a)
     return (isinstance(a, float) and isinstance(b, float) and math.isnan(a) and math.isnan(b)) or a == b
 
 
+def shown(value) -> str:
+    """A value as a reader should see it: 4 significant digits, n/a for NaN."""
+    if isinstance(value, float) and math.isnan(value):
+        return "n/a"
+    return format(value, ".4g") if isinstance(value, (int, float)) else str(value)
+
+
 def assert_card_matches(html: str, scores: dict):
-    """Every value of the card is scores.json's, shown to 4 digits; the category's meaning is shown."""
+    """The card holds scores.json's values exactly and shows them to 4 digits beside their labels;
+    the category's meaning, the verdict and (paper protocol) every turn's EM / CB / ES are shown."""
     card = card_of(html)
     episode = scores["episode scores"]
-    for name in ("Main Score", "Execution Success", "Cell F1", "Cell Precision", "Cell Recall", "Error Category"):
-        assert name in card.values, (name, card.values)
-    for key, shown in card.values.items():
-        name, _, round_idx = key.partition("#")
-        want = scores["round scores"][round_idx][name] if round_idx else episode[name]
-        assert len(shown) == 1, (key, shown)
-        for raw, text in shown:
-            assert same(json.loads(raw), want), (name, raw, want)
-            text = text.split(": ")[-1].split(" ")[-1]  # "P 0.6", "0: 1" -> the number
-            if isinstance(want, str):
-                assert text == want or want.endswith(text)
-            elif math.isnan(want):
-                assert text == "n/a", (name, text)
-            else:
-                assert abs(float(text) - want) <= 5e-4 * max(1.0, abs(want)), (name, text, want)
-    assert card.texts["sartco-meaning"] == category_meaning(episode["Error Category"])
+    assert same(card.data, episode), (card.data, episode)
+    assert card.row("Main Score") == shown(episode["Main Score"])
+    assert card.row("ES (") == shown(episode["Execution Success"])  # "(execution success)", "(ours: ...)"
+    assert card.row("Cell F1 (P / R)") == (f'{shown(episode["Cell F1"])} (P {shown(episode["Cell Precision"])} / '
+                                           f'R {shown(episode["Cell Recall"])})')
+    category = episode["Error Category"]
+    assert card.row("Error category") == (f'{category} ({episode["Error Family"]}): {category_meaning(category)}')
+    for name, label in (("Exact Match", "EM ("), ("CodeBLEU", "CodeBLEU"), ("Puts", "Puts")):
+        if name in episode:
+            assert card.row(label) == shown(episode[name]), name
+    rounds = sorted((n for n in episode if n.startswith("ES Round ")), key=lambda n: int(n.split()[-1]))
+    if rounds:
+        assert card.row("ES by round") == " · ".join(f"round {n.split()[-1]}: {shown(episode[n])}" for n in rounds)
+    for name, value in episode.items():  # every other score of the game in a row of its own name
+        if name in card.rows:
+            assert card.rows[name] == shown(value), name
+    per_turn = {k: {n: v for n, v in s.items() if n.startswith("Paper ")} for k, s in scores["round scores"].items()}
+    per_turn = {k: v for k, v in per_turn.items() if v}
+    assert same(card.turns or {}, per_turn), (card.turns, per_turn)
+    assert [row[1:] for row in card.turn_rows[1:]] == [[shown(v) for v in per_turn[k].values()]
+                                                       for k in sorted(per_turn, key=int)]
     verdict = {(0, 1, 0): "won", (0, 0, 1): "lost", (1, 0, 0): "aborted"}
     assert card.texts["sartco-verdict"] == verdict[(episode["Aborted"], episode["Success"], episode["Lose"])]
     return card
@@ -145,19 +171,23 @@ def test_the_card_shows_the_values_of_scores_json_whatever_the_order(played):
         assert html.rindex('class="sartco-card"') > html.rindex('class="msg'), "the card is the last event"
         cards[key] = assert_card_matches(html, read_scores(folder / "scores.json"))
     won, lost, aborted, hostile = (cards[("cobot_instruct", k)] for k in range(4))
-    assert won.values["Main Score"] == [["100.0", "100"]] and won.values["Exact Match"] == [["1", "1"]]
-    assert lost.values["Error Category"][0][1] == "mismatch_location" and lost.values["Cell F1"][0][1] == "0.6"
+    assert won.row("Main Score") == "100" and won.row("EM (exact match)") == "1" and won.data["Exact Match"] == 1
+    assert lost.row("Error category").startswith("mismatch_location") and lost.row("Cell F1").startswith("0.6 ")
     assert "lost" == lost.texts["sartco-verdict"] and "mismatch_location" in lost.texts["sartco-outcome"]
-    assert aborted.values["Main Score"] == [["NaN", "n/a"]] and aborted.texts["sartco-verdict"] == "aborted"
-    assert hostile.values["Error Category"][0][1] == "key_error"
+    assert aborted.row("Main Score") == "n/a" and math.isnan(aborted.data["Main Score"])
+    assert aborted.texts["sartco-verdict"] == "aborted"
+    assert hostile.row("Error category").startswith("key_error")
     assert '<b id="pwned">' in hostile.texts["sartco-outcome"] and "pwned" not in hostile.ids  # text, not markup
     dialogue = next(card for (game, _), card in cards.items() if game == "cobot_describe")
-    assert [v for v, _ in dialogue.values["ES Round 0"]] == ["0"] and dialogue.values["ES Round 1"][0][0] == "1"
+    assert dialogue.data["ES Round 0"] == 0 and dialogue.data["ES Round 1"] == 1
+    assert dialogue.row("ES by round").startswith("round 0: 0 · round 1: 1")
     paper = cards[(PAPER_GAME, 0)]
-    turns = sorted((int(k.split("#")[1]), v[0][0]) for k, v in paper.values.items() if k.startswith("Paper ES#"))
-    assert [es for _, es in turns] == ["1", "0"] + ["1"] * (len(turns) - 2), turns  # turn 2 (index 1) wrong
+    turns = [paper.turns[k]["Paper ES"] for k in sorted(paper.turns, key=int)]
+    assert turns == [1, 0] + [1] * (len(turns) - 2), turns  # turn 2 (index 1) wrong
+    assert [row[3] for row in paper.turn_rows[1:]] == [str(es) for es in turns]  # shown in the turn table
     n = len(turns)
-    assert json.loads(paper.values["Paper ES"][0][0]) == pytest.approx((n - 1) / n)
+    assert paper.data["Paper ES"] == pytest.approx((n - 1) / n)
+    assert paper.row("Main Score (100 x paper ES)") == shown(100 * (n - 1) / n)
 
 
 @pytest.mark.slow
@@ -192,9 +222,9 @@ def test_a_harness_fault_has_its_card_and_its_meaning(play_episodes, monkeypatch
     no_worker(monkeypatch, "no worker for the card")
     [result] = play_episodes([scripted_episode(0, TARGET, GOLD, ["Build the board."])], INSTRUCT)
     card = assert_card_matches(build_transcript(result["interactions"]), read_scores(result["dir"] / "scores.json"))
-    assert card.values["Error Category"][0][1] == "harness_error" and card.texts["sartco-verdict"] == "aborted"
-    assert card.texts["sartco-meaning"] == "the harness failed, not the model; left out of the scores."
-    assert "no worker for the card" in card.values["Harness Error"][0][1]
+    assert card.row("Error category").startswith("harness_error") and card.texts["sartco-verdict"] == "aborted"
+    assert card.row("Error category").endswith(": the harness failed, not the model; left out of the scores.")
+    assert "no worker for the card" in card.row("Harness failure")
 
 
 def test_a_fault_of_the_card_loses_nothing(play_episodes, monkeypatch):

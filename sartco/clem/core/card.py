@@ -12,10 +12,16 @@ line of the final build; Main Score; ES; cell F1 with P and R; the error categor
 its meaning in plain words (sartco.world.category_meaning); the harness's reason for a
 harness_error; EM and CodeBLEU where the scorer computed them; puts; for the paper protocol its
 EM / CB / ES and the same per turn; for dialogues ES by round; then every other score of the game.
-Each value is a `<span class="sartco-value" data-score=NAME data-value=JSON>` (a per-turn value
-also data-round=K, its key under scores.json's "round scores") holding the value
-as scores.json has it (JSON, NaN as NaN) and shown rounded to 4 significant digits, "n/a" for
-NaN. Every text is escaped (sartco.text.escape, then HTML).
+The rows are lines of monospace text (`.sartco-scores`, a <div> each: label, then the value in an
+aligned column that a long value wraps to), each value rounded to 4 significant digits, "n/a" for NaN. The exact values are on the
+card as scores.json has them (JSON, NaN as NaN): the episode scores in the card's `data-scores`,
+the paper protocol's per-turn scores in its turn table's `data-turns` (keyed as scores.json's
+"round scores"). Every text is escaped (sartco.text.escape / one_line, then HTML).
+
+The card has as few tags as it can (a line of text per row, not a table with a tag per cell and value):
+clemcore's transcript builder parses every tag of every message with Python-Markdown's HTML
+parser, and a card of ~100 tags cost about as much as the rest of an episode's transcript
+(issue 23's 10 % budget for make main).
 
 The record the card is computed from is a second clemcore GameInteractionsRecorder registered on
 the game master after setup, i.e. when clemcore registers the one that writes interactions.json
@@ -35,7 +41,7 @@ from clemcore.clemgame.recorder import GameInteractionsRecorder
 from sartco.episode import (BUILD_KEY, CELL_F1, CELL_PRECISION, CELL_RECALL, CODEBLEU, ERROR_CATEGORY, ERROR_FAMILY,
                             EXACT_MATCH, EXECUTION_SUCCESS, HARNESS_REASON, MARKDOWN_KEY, PAPER_SCORES, PUTS,
                             ROUND_PREFIX)
-from sartco.text import escape
+from sartco.text import escape, one_line
 from sartco.world import category_meaning
 
 from .building import BuildRecord
@@ -52,8 +58,9 @@ VERDICT_COLOURS = {"won": "#1a7f37", "lost": "#cf222e", "aborted": "#57606a", "u
 # the card's message is wider than clemcore's other GM->GM messages, its labels stay on one line
 CARD_STYLE = ("<style>.msg:has(.sartco-card) {margin-left: 5%; margin-right: 5%; font-size: 0.9rem} "
               ".sartco-card {margin: 4px 0; padding: 8px 12px; border: 2px solid #444; border-radius: 6px; "
-              "background: #fff} .sartco-card th {white-space: nowrap} .sartco-card th, .sartco-card td "
-              "{text-align: left; padding: 2px 12px 2px 0; vertical-align: top}</style>")
+              "background: #fff} .sartco-scores {margin-top: 4px; white-space: pre-wrap; overflow-wrap: anywhere; "
+              "font-family: monospace} "
+              ".sartco-turns th, .sartco-turns td {text-align: left; padding: 2px 12px 2px 0}</style>")
 
 
 def card_scores(scorer_class, game_name: str, experiment: dict, instance: dict, interactions: dict) -> dict:
@@ -70,69 +77,64 @@ def shown(value) -> str:
         return "n/a"
     if isinstance(value, (int, float)) and not isinstance(value, bool):
         return format(value, ".4g")
-    return escape(str(value))
+    return str(value)
 
 
-def value(name: str, scores: dict, label: str | None = None, round_idx=None) -> str:
-    """One score as a span carrying its exact scores.json value (JSON) and its shown form (a round
-    score: with the round's index as scores.json's "round scores" keys it)."""
-    v = scores.get(name)
-    where = "" if round_idx is None else f' data-round="{int(round_idx)}"'
-    return (f'<span class="sartco-value" data-score="{html.escape(name)}"{where} '
-            f'data-value="{html.escape(json.dumps(v))}">'
-            f"{html.escape((label or '') + shown(v), quote=False)}</span>")
-
-
-def _row(label: str, cell: str) -> str:
-    return f'<tr><th>{html.escape(label)}</th><td>{cell}</td></tr>'
-
-
-def card_html(scores: dict, outcome_line: str | None) -> str:
-    """The card of an episode's scores (clemcore's scores dict: "episode scores", "round scores")."""
-    ep, rounds = scores.get(metrics.KEY_EPISODE_SCORES, {}), scores.get(metrics.KEY_ROUND_SCORES, {})
-    verdict = next((word for key, word in VERDICTS if ep.get(key)), "unknown")
-    paper = any(name in ep for name in PAPER_SCORES.values())
-    ours = " (ours: the whole program)" if paper else ""  # the paper protocol's Main Score is 100 x its ES
-    rows = [_row("Main Score" + (" (100 x paper ES)" if paper else ""), value(metrics.BENCH_SCORE, ep)),
-            _row(f"ES (execution success){ours}", value(EXECUTION_SUCCESS, ep))]
+def _rows(ep: dict, paper: bool) -> list[tuple[str, str]]:
+    """The card's rows (label, shown value), plain text, in the order a reader wants them."""
+    # the paper protocol's Main Score is 100 x its ES; ES, EM and CodeBLEU are ours (the whole program)
+    ours = "ours: whole program" if paper else None
+    rows = [("Main Score" + (" (100 x paper ES)" if paper else ""), shown(ep.get(metrics.BENCH_SCORE))),
+            (f"ES ({ours or 'execution success'})", shown(ep.get(EXECUTION_SUCCESS)))]
     if CELL_F1 in ep:
-        rows.append(_row("Cell F1 (P / R)", f"{value(CELL_F1, ep)} ({value(CELL_PRECISION, ep, 'P ')} / "
-                                            f"{value(CELL_RECALL, ep, 'R ')})"))
+        rows.append(("Cell F1 (P / R)", f"{shown(ep[CELL_F1])} (P {shown(ep.get(CELL_PRECISION))} / "
+                                        f"R {shown(ep.get(CELL_RECALL))})"))
     category = ep.get(ERROR_CATEGORY)
     if category is not None:
         try:
             meaning = category_meaning(category)
         except ValueError:
             meaning = "an unknown category."
-        rows.append(_row("Error category", f"{value(ERROR_CATEGORY, ep)} ({value(ERROR_FAMILY, ep)}): "
-                                           f'<span class="sartco-meaning">{html.escape(meaning)}</span>'))
-    for name, label in ((HARNESS_REASON, "Harness failure"), (EXACT_MATCH, f"EM (exact match){ours}"),
-                        (CODEBLEU, f"CodeBLEU{ours}"), (PUTS, "Puts")):
+        rows.append(("Error category", f"{shown(category)} ({shown(ep.get(ERROR_FAMILY))}): {meaning}"))
+    for name, label in ((HARNESS_REASON, "Harness failure"), (EXACT_MATCH, f"EM ({ours or 'exact match'})"),
+                        (CODEBLEU, f"CodeBLEU ({ours})" if ours else "CodeBLEU"), (PUTS, "Puts")):
         if name in ep:
-            rows.append(_row(label, value(name, ep)))
+            rows.append((label, shown(ep[name])))
     if paper:
-        rows.append(_row("Paper protocol (share of turns)",
-                         " / ".join(value(n, ep, f"{n.split()[1]} ") for n in PAPER_SCORES.values())))
+        rows.append(("Paper (share of turns)",
+                     " / ".join(f"{n.split()[1]} {shown(ep.get(n))}" for n in PAPER_SCORES.values())))
     by_round = sorted((n for n in ep if n.startswith(ROUND_PREFIX)), key=lambda n: int(n[len(ROUND_PREFIX):]))
     if by_round:
-        rows.append(_row("ES by round (after k corrections)",
-                         " · ".join(value(n, ep, f"round {n[len(ROUND_PREFIX):]}: ") for n in by_round)))
-    for name in ep:
-        if name not in FRAMEWORK and name not in SHOWN_FIRST and name not in by_round:
-            rows.append(_row(name, value(name, ep)))
-    colour = VERDICT_COLOURS[verdict]
-    parts = [f'{CARD_STYLE}<div class="sartco-card"><div><b>Score card</b>: '
-             f'<span class="sartco-verdict" style="font-weight: bold; color: {colour}">{verdict}</span></div>']
+        rows.append(("ES by round (after k corrections)",
+                     " · ".join(f"round {n[len(ROUND_PREFIX):]}: {shown(ep[n])}" for n in by_round)))
+    rows.extend((name, shown(ep[name])) for name in ep
+                if name not in FRAMEWORK and name not in SHOWN_FIRST and name not in by_round)
+    return rows
+
+
+def _data(values) -> str:
+    return html.escape(json.dumps(values), quote=True)
+
+
+def card_html(scores: dict, outcome_line: str | None) -> str:
+    """The card of an episode's scores (clemcore's scores dict: "episode scores", "round scores")."""
+    ep, rounds = scores.get(metrics.KEY_EPISODE_SCORES, {}), scores.get(metrics.KEY_ROUND_SCORES, {})
+    verdict = next((word for key, word in VERDICTS if ep.get(key)), "unknown")
+    rows = _rows(ep, any(name in ep for name in PAPER_SCORES.values()))
+    width = max(len(label) for label, _ in rows) + 2  # the value column; a long value wraps to it
+    table = "".join(f"<div>{html.escape(f'{label:{width}}{one_line(text)}', quote=False)}</div>" for label, text in rows)
+    parts = [f'{CARD_STYLE}<div class="sartco-card" data-scores="{_data(ep)}"><b>Score card</b>: '
+             f'<b class="sartco-verdict" style="color: {VERDICT_COLOURS[verdict]}">{verdict}</b>']
     if outcome_line:
         parts.append(f'<div class="sartco-outcome">{html.escape(escape(outcome_line), quote=False)}</div>')
-    parts.append(f'<table class="sartco-scores">{"".join(rows)}</table>')
-    turns = [(k, rounds[k]) for k in sorted(rounds, key=int) if PAPER_SCORES["em"] in rounds[k]]
+    parts.append(f'<div class="sartco-scores" style="padding-left: {width}ch; text-indent: -{width}ch">{table}</div>')
+    turns = [k for k in sorted(rounds, key=int) if PAPER_SCORES["em"] in rounds[k]]
     if turns:
         head = "".join(f'<th>{html.escape(n.split()[1])}</th>' for n in PAPER_SCORES.values())
-        body = "".join(f'<tr data-turn="{int(k) + 1}"><td>{int(k) + 1}</td>'
-                       + "".join(f'<td>{value(n, turn, round_idx=k)}</td>' for n in PAPER_SCORES.values())
-                       + "</tr>" for k, turn in turns)
-        parts.append(f'<table class="sartco-turns"><tr><th>paper turn</th>{head}</tr>{body}</table>')
+        body = "".join(f"<tr><td>{int(k) + 1}</td>" + "".join(f"<td>{shown(rounds[k].get(n))}</td>"
+                                                            for n in PAPER_SCORES.values()) + "</tr>" for k in turns)
+        data = _data({k: {n: rounds[k][n] for n in PAPER_SCORES.values() if n in rounds[k]} for k in turns})
+        parts.append(f'<table class="sartco-turns" data-turns="{data}"><tr><th>paper turn</th>{head}</tr>{body}</table>')
     return "".join(parts) + "</div>"
 
 
