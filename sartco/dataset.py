@@ -10,7 +10,8 @@ A board kind is a board type with an object type. Each kind has one spelling per
 
 key: our dataset's file names (`<key>_<split>.json`), config sections and record ids;
 prefix: the published SARTCo file names (`<prefix>_<split>[_<suffix>].json`);
-experiment: cobot_describe's experiment names; cell: cobot_instruct's experiment names (Table 3 rows).
+experiment: cobot_describe's experiment names; cell: cobot_instruct's experiment names (Table 3 rows),
+by the rule of `experiment_name`: <cell>_<task>_<source>[_<variant>...].
 The published files call complex objects "challenge" (`published_object`).
 
 Instruction sources: template (generated), human (`_hc` files), codellama / gpt4 / claude (`_mg`,
@@ -122,6 +123,14 @@ REGULAR_SIMPLE = BoardKind("regular", "simple", "regular_simple", "rb_so", "regu
 REGULAR_COMPLEX = BoardKind("regular", "complex", "regular_complex", "rb_cho", "regular_boards_complex_objects",
                             "rb_co", "challenge")
 BOARD_KINDS = (SIMPLE, REGULAR_SIMPLE, REGULAR_COMPLEX)
+
+
+def experiment_name(kind: BoardKind, task: str, source: str, *variants: str | None) -> str:
+    """The one rule of experiment names, every instance file of both games:
+    <cell>_<task>_<source>, then _<variant> for each variant given (None and "" are left out):
+    sb_so_first_order_template, rb_so_repetition_template_examples_3, sb_so_optimal_function_describer_clarify.
+    A "/" of the source (a describer model's name) becomes "_": the name is one results folder."""
+    return "_".join([kind.cell, task, source.replace("/", "_"), *(v for v in variants if v)])
 
 
 def board_kind(board: str, object_type: str) -> BoardKind:
