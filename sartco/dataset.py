@@ -3,15 +3,17 @@ sartco.settings, for the data folder, so every layer may use it).
 
 A board kind is a board type with an object type. Each kind has one spelling per use:
 
-    kind             board    object   key              prefix  experiment                      cell
-    SIMPLE           simple   simple   simple_simple    sb_so   simple_boards                   sb_so
-    REGULAR_SIMPLE   regular  simple   regular_simple   rb_so   regular_boards_simple_objects   rb_so
-    REGULAR_COMPLEX  regular  complex  regular_complex  rb_cho  regular_boards_complex_objects  rb_co
+    kind             board    object   key              prefix  cell
+    SIMPLE           simple   simple   simple_simple    sb_so   sb_so
+    REGULAR_SIMPLE   regular  simple   regular_simple   rb_so   rb_so
+    REGULAR_COMPLEX  regular  complex  regular_complex  rb_cho  rb_co
 
 key: our dataset's file names (`<key>_<split>.json`), config sections and record ids;
 prefix: the published SARTCo file names (`<prefix>_<split>[_<suffix>].json`);
-experiment: cobot_describe's experiment names; cell: cobot_instruct's experiment names (Table 3 rows).
-The published files call complex objects "challenge" (`published_object`).
+cell: the experiment names of both games (Table 3 rows), by the one rule of `experiment_name`:
+<cell>_<task>_<source>[_<variant>...] (sb_so_optimal_function_template,
+rb_co_repetition_describer_clarify). The published files call complex objects "challenge"
+(`published_object`).
 
 Instruction sources: template (generated), human (`_hc` files), codellama / gpt4 / claude (`_mg`,
 `_gpt4_mg`, `_claude_mg`: model-written). Tasks are the paper's code styles. The published dialogue
@@ -98,8 +100,7 @@ class BoardKind(NamedTuple):
     object: str            # simple | complex
     key: str               # simple_simple: our dataset files and configs
     prefix: str            # sb_so: the published files
-    experiment: str        # simple_boards: cobot_describe's experiments
-    cell: str              # sb_so: cobot_instruct's experiments
+    cell: str              # sb_so: the experiments of both games (experiment_name)
     published_object: str  # simple | challenge: the object type as the published files spell it
 
     def dataset_file(self, split: str) -> str:
@@ -116,12 +117,18 @@ class BoardKind(NamedTuple):
         return TASKS[:3] if self.board == "simple" else TASKS[3:]
 
 
-SIMPLE = BoardKind("simple", "simple", "simple_simple", "sb_so", "simple_boards", "sb_so", "simple")
-REGULAR_SIMPLE = BoardKind("regular", "simple", "regular_simple", "rb_so", "regular_boards_simple_objects", "rb_so",
-                           "simple")
-REGULAR_COMPLEX = BoardKind("regular", "complex", "regular_complex", "rb_cho", "regular_boards_complex_objects",
-                            "rb_co", "challenge")
+SIMPLE = BoardKind("simple", "simple", "simple_simple", "sb_so", "sb_so", "simple")
+REGULAR_SIMPLE = BoardKind("regular", "simple", "regular_simple", "rb_so", "rb_so", "simple")
+REGULAR_COMPLEX = BoardKind("regular", "complex", "regular_complex", "rb_cho", "rb_co", "challenge")
 BOARD_KINDS = (SIMPLE, REGULAR_SIMPLE, REGULAR_COMPLEX)
+
+
+def experiment_name(kind: BoardKind, task: str, source: str, *variants: str | None) -> str:
+    """The one rule of experiment names, every instance file of both games:
+    <cell>_<task>_<source>, then _<variant> for each variant given (None and "" are left out):
+    sb_so_first_order_template, rb_so_repetition_template_examples_3, sb_so_optimal_function_describer_clarify.
+    A "/" of the source (a describer model's name) becomes "_": the name is one results folder."""
+    return "_".join([kind.cell, task, source.replace("/", "_"), *(v for v in variants if v)])
 
 
 def board_kind(board: str, object_type: str) -> BoardKind:
@@ -133,9 +140,9 @@ def board_kind(board: str, object_type: str) -> BoardKind:
 
 
 def kind_named(name: str) -> BoardKind:
-    """The kind of any of its spellings (key, prefix, experiment or cell); ValueError otherwise."""
+    """The kind of any of its spellings (key, prefix or cell); ValueError otherwise."""
     for kind in BOARD_KINDS:
-        if name in (kind.key, kind.prefix, kind.experiment, kind.cell):
+        if name in (kind.key, kind.prefix, kind.cell):
             return kind
     raise ValueError(f"unknown board kind {name!r}; expected one of "
                      + ", ".join(k.key for k in BOARD_KINDS))

@@ -3,10 +3,10 @@ scripts games/*/instancegenerator.py with their old flags): sartco.instancegen.c
 options), .instruct and .describe (one function per instance file), .common (the generator class,
 writing, the dataset's records), .options (defaults and bounds), .legacy (the scripts' flags).
 
-Conventions kept from the two generators because changing them would change the files' bytes:
-cobot_instruct counts game_id from 0 in each experiment and names experiments by BoardKind.cell
-(sb_so, rb_so, rb_co), its files record `dataset` as dataset_info (version, source, seed, path,
-generator seed, examples); cobot_describe counts game_id over both of its files and names
-experiments by BoardKind.experiment (simple_boards, ...), recording `dataset` (version, seed,
-source, split) and a top-level `seed`.
+One convention for every file of both games: game_id counts from 0 in each experiment (an episode
+is its game, experiment and game_id), and experiments are named by sartco.dataset.experiment_name,
+<cell>_<task>_<source>[_<variant>] (sb_so_first_order_template, rb_co_repetition_describer_clarify).
+What a file records about its data differs by game: cobot_instruct's files record `dataset` as
+dataset_info (version, source, seed, path, generator seed, examples); cobot_describe's record
+`dataset` (version, seed, source, split) and a top-level `seed`.
 """

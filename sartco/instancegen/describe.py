@@ -1,23 +1,26 @@
 """cobot_describe's instance files (`sartco instances describe`), from a generated dataset's test split.
 
-One experiment per board kind, every test board of the dataset one episode:
-  simple_boards                    simple boards (simple objects); the builder writes the optimal
-                                   function (the paper's single-turn task of model-written instructions)
-  regular_boards_simple_objects    regular boards of simple objects; the builder gets the object
-  regular_boards_complex_objects   function and writes the repetition code (of complex objects)
-(BoardKind.experiment). The builder's prompt is cobot_instruct's (sartco.instances.prompts.builder_prompt)
+One experiment per board kind, every test board of the dataset one episode, named as every
+experiment of both games (sartco.dataset.experiment_name: <cell>_<task>_<source>[_<variant>]; the
+task is DESCRIBED_TASK's, the source "describer"):
+  sb_so_optimal_function_describer   simple boards (simple objects); the builder writes the optimal
+                                     function (the paper's single-turn task of model-written instructions)
+  rb_so_repetition_describer         regular boards of simple objects; the builder gets the object
+  rb_co_repetition_describer         function and writes the repetition code (of complex objects)
+The builder's prompt is cobot_instruct's (sartco.instances.prompts.builder_prompt)
 with --examples in-context examples from the dataset's train split (select_examples, seeded by
 --seed); the instruction slot is filled during the game with what the describer wrote. The file
 records the dataset version and seed (`dataset`) and the generator's seed (`seed`).
 
 Each board kind is played in every mode of sartco.clem.describe.dialogue.MODES: `oneshot` (the three
-experiments above, named by the board kind only) in in/instances.json, the game entry
-`cobot_describe` (the paper's one-shot game: its clemscore means that alone), and `<kind>_clarify`,
-`<kind>_correct`, `<kind>_clarify_correct` (experiment fields `mode`, `questions` K = --questions,
+experiments above, no variant) in in/instances.json, the game entry `cobot_describe` (the paper's
+one-shot game: its clemscore means that alone), and the mode as the variant, `<name>_clarify`,
+`<name>_correct`, `<name>_clarify_correct` (experiment fields `mode`, `questions` K = --questions,
 `corrections` R = --corrections; the same boards and prompts, the builder's prompt of a clarify
 mode ends with the paragraph on questions, sartco.clem.describe.dialogue.clarify_note) in
-in/instances_dialogue.json, the entry `cobot_describe_dialogue`. game_id counts over both files
-(mode by mode, as one file would), so ids are unique across the two entries.
+in/instances_dialogue.json, the entry `cobot_describe_dialogue`. game_id counts from 0 in each
+experiment, as in every instance file: an episode is (game, experiment, game_id), and the same
+board has the same game_id in every mode.
 
 --slice N also writes in/instances_slice.json and in/instances_dialogue_slice.json with N episodes
 per experiment, spread over the split, for a smoke run with a local model:
@@ -31,7 +34,7 @@ from pathlib import Path
 from sartco.clem.describe.describer import INSTRUCTION_SLOT
 from sartco.clem.describe.dialogue import MODES, clarify_note
 from sartco.clem.core.episodes import board_fields
-from sartco.dataset import BOARD_KINDS, DESCRIBED_TASK
+from sartco.dataset import BOARD_KINDS, DESCRIBED_TASK, experiment_name
 from sartco.episode import DescribeEpisode, DescribeExperiment
 from sartco.instances.examples import select_examples
 from sartco.instances.prompts import builder_prompt, describer_prompt, instruction_text
@@ -41,34 +44,31 @@ from .common import InstanceFile, records, spread, write
 
 ONESHOT = ("oneshot",)
 DIALOGUE = tuple(m for m in MODES if m != "oneshot")
+SOURCE = "describer"  # who writes the builder's instructions
 
 
 def modes_file(gen: InstanceFile, seed: int, dataset: Path, examples: int, per_experiment: int | None,
                questions: int, corrections: int, modes: tuple[str, ...]):
-    """The experiments of `modes` (ONESHOT or DIALOGUE), game_id counted over every mode."""
+    """The experiments of `modes` (ONESHOT or DIALOGUE), game_id counted from 0 in each."""
     gen.source = dataset
     manifest, files = load_dataset(dataset)
     gen.instances["dataset"] = {"version": manifest["version"], "seed": manifest["seed"],
                                 "source": manifest["source"], "split": "test"}
     gen.instances["seed"] = seed
-    game_id = 0
-    for mode in MODES:
+    for mode in modes:
         for kind in BOARD_KINDS:  # the builder's task: the paper's for model-written instructions
             task = DESCRIBED_TASK[kind.board]
             boards = spread(records(dataset, files, kind, "test"), per_experiment)
-            if mode not in modes:  # another entry's file: its ids stay taken, so ids are unique across files
-                game_id += len(boards)
-                continue
-            experiment = gen.add_experiment(kind.experiment if mode == "oneshot" else f"{kind.experiment}_{mode}")
+            experiment = gen.add_experiment(experiment_name(kind, task, SOURCE, None if mode == "oneshot" else mode))
             experiment.update(DescribeExperiment(board_type=kind.board, object_type=kind.object, task=task,
-                                                 source="describer", split="test", dataset=manifest["version"],
+                                                 source=SOURCE, split="test", dataset=manifest["version"],
                                                  dataset_seed=manifest["seed"], examples=examples,
                                                  example_seed=seed))
             if mode != "oneshot":  # oneshot experiments keep the fields they always had
                 experiment.update(mode=mode, questions=questions if "clarify" in mode else 0,
                                   corrections=corrections if "correct" in mode else 0)
             pool = records(dataset, files, kind, "train")
-            for record in boards:
+            for game_id, record in enumerate(boards):
                 shots = select_examples(record, pool, k=examples, rng=seed)
                 prompt = builder_prompt(record, task, shots, instruction=INSTRUCTION_SLOT)
                 if "clarify" in mode:
@@ -77,7 +77,6 @@ def modes_file(gen: InstanceFile, seed: int, dataset: Path, examples: int, per_e
                     game_id=game_id, **board_fields(record, task), example_ids=[r["id"] for r in shots],
                     describer_prompt=describer_prompt(record), builder_prompt=prompt,
                     template_instruction=instruction_text(record, task, "template"), record=record))
-                game_id += 1
 
 
 def _write(o: Namespace, game_dir: Path, name: str, modes: tuple[str, ...], per_experiment: int | None) -> str:

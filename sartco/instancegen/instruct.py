@@ -28,9 +28,11 @@ name, so its results, and clem eval's clemscore, never mix with the others):
   instances_fresh.json      cobot_instruct_fresh (gitignored; sartco.clem.instruct.fresh): each template
                             cell's published test boards beside as many fresh boards of a seed.
 
-Experiment names: <board>_<object>_<task>_<source>[_<ablation>], board sb|rb, object so|co
-(BoardKind.cell), task first_order | sequence_function | optimal_function | repetition, source
-template | human | codellama | gpt4 | claude; ablations end in _examples_<k> or _without_<section>.
+Experiment names (sartco.dataset.experiment_name, the one rule of both games):
+<board>_<object>_<task>_<source>[_<variant>], board sb|rb, object so|co (BoardKind.cell), task
+first_order | sequence_function | optimal_function | repetition, source template | human |
+codellama | gpt4 | claude (or a describer model); the variants: examples_<k> or without_<section>
+(ablations), feedback, train, published or fresh<SEED>; the paper protocol's are prefixed paper_.
 In-context examples always come from the generated dataset's train split (the published data has
 no simple-board train split). game_id counts from 0 in each experiment. Each experiment and the file
 record the dataset (dataset_info: version, source, seed, path) and this generator's seed.
@@ -43,7 +45,8 @@ from pathlib import Path
 
 from sartco.clem.instruct.fresh import DEFAULT_PUBLISHED, FreshInstanceGenerator
 from sartco.clem.instruct.instruct_generator import FEEDBACK_SUFFIX
-from sartco.dataset import BOARD_KINDS, DESCRIBED_TASK, REGULAR_COMPLEX, REGULAR_SIMPLE, SIMPLE, board_kind
+from sartco.dataset import (BOARD_KINDS, DESCRIBED_TASK, REGULAR_COMPLEX, REGULAR_SIMPLE, SIMPLE, board_kind,
+                            experiment_name)
 from sartco.errors import UserError
 from sartco.instances.examples import MAX_EXAMPLES
 from sartco.instances.prompts import SECTIONS
@@ -76,7 +79,7 @@ def table3(gen: InstanceFile, seed: int, dataset_dir: Path, n_examples: int, per
     files, pools, info = _generated(gen, seed, dataset_dir, n_examples)
     for kind, task, sources, _ in CELLS:
         for source in sources:
-            exp = gen.experiment(f"{kind.cell}_{task}_{source}", kind, task, source, "test", info)
+            exp = gen.experiment(kind, task, source, "test", info)
             items = records(dataset_dir, files, kind, "test")[:per_experiment]
             gen.add_episodes(exp, items, task, source, pools[kind], seed, n_examples)
 
@@ -89,13 +92,13 @@ def ablations(gen: InstanceFile, seed: int, dataset_dir: Path, n_examples: int, 
     for kind, task, _, _ in CELLS:
         val = records(dataset_dir, files, kind, "val")[:episodes]
         for k in range(MAX_EXAMPLES + 1):
-            exp = gen.experiment(f"{kind.cell}_{task}_template_examples_{k}", kind, task, "template", "val",
-                                 info, {"kind": "examples", "value": k})
+            exp = gen.experiment(kind, task, "template", "val", info, {"kind": "examples", "value": k},
+                                 variant=f"examples_{k}")
             gen.add_episodes(exp, val, task, "template", pools[kind], seed, k)
         for section in SECTIONS:
             kept = tuple(s for s in SECTIONS if s != section)
-            exp = gen.experiment(f"{kind.cell}_{task}_template_without_{section}", kind, task, "template",
-                                 "val", info, {"kind": "without", "value": section})
+            exp = gen.experiment(kind, task, "template", "val", info, {"kind": "without", "value": section},
+                                 variant=f"without_{section}")
             gen.add_episodes(exp, val, task, "template", pools[kind], seed, n_examples, kept)
 
 
@@ -104,7 +107,7 @@ def train(gen: InstanceFile, seed: int, dataset_dir: Path, n_examples: int, epis
     gen.source = dataset_dir
     _, pools, info = _generated(gen, seed, dataset_dir, n_examples)
     for kind, task, _, _ in CELLS:
-        exp = gen.experiment(f"{kind.cell}_{task}_template_train", kind, task, "template", "train", info)
+        exp = gen.experiment(kind, task, "template", "train", info, variant="train")
         gen.add_episodes(exp, pools[kind][:episodes or None], task, "template", pools[kind], seed, n_examples)
 
 
@@ -118,13 +121,13 @@ def published(gen: InstanceFile, seed: int, dataset_dir: Path, n_examples: int, 
     for kind, task, _, sources in CELLS:
         for source in sources:
             items = [r for r in records(published_dir, pub_files, kind, "test") if source in r["instructions"]]
-            exp = gen.experiment(f"{kind.cell}_{task}_{source}", kind, task, source, "test", pub_info)
+            exp = gen.experiment(kind, task, source, "test", pub_info)
             gen.add_episodes(exp, items, task, source, pools[kind], seed, n_examples)
 
 
 def described(gen: InstanceFile, seed: int, dataset_dir: Path, n_examples: int, describers_dir: Path):
     """One experiment per describer model (an instruction source of the manifest) and board kind,
-    named <board>_<task>_<model>, with the builder task cobot_describe gives (DESCRIBED_TASK)."""
+    named <cell>_<task>_<model>, with the builder task cobot_describe gives (DESCRIBED_TASK)."""
     gen.source = describers_dir
     _, pools, info = _generated(gen, seed, dataset_dir, n_examples)
     manifest, files = load_dataset(describers_dir)
@@ -136,8 +139,7 @@ def described(gen: InstanceFile, seed: int, dataset_dir: Path, n_examples: int, 
             task = DESCRIBED_TASK[kind.board]
             items = [r for r in records(describers_dir, files, kind, "test") if source in r["instructions"]]
             if items:
-                exp = gen.experiment(f"{kind.cell}_{task}_{source}".replace("/", "_"), kind, task, source,
-                                     "test", d_info)
+                exp = gen.experiment(kind, task, source, "test", d_info)
                 gen.add_episodes(exp, items, task, source, pools[kind], seed, n_examples)
 
 
@@ -158,7 +160,7 @@ def paper(gen: InstanceFile, seed: int, dataset_dir: Path, published_dir: Path |
     for episodes in cells.values():
         cell = episodes[0]["cell"]
         kind = board_kind(cell["board"], cell["object"])
-        exp = gen.add_experiment(f"{PROTOCOL}_{kind.cell}_{cell['task']}_{cell['source']}")
+        exp = gen.add_experiment(f"{PROTOCOL}_{experiment_name(kind, cell['task'], cell['source'])}")
         exp.update(experiment_fields(episodes[0]))
         exp.move_to_end("game_instances")
         for game_id, episode in enumerate(episodes):

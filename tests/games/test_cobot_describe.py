@@ -71,7 +71,7 @@ def describe_run(tmp_path_factory):
 
 def test_mock_builds_every_board(describe_run):
     names = [e["name"] for e in json.loads(SLICE.read_text())["experiments"] if "mode" not in e]  # oneshot
-    assert names == ["simple_boards", "regular_boards_simple_objects", "regular_boards_complex_objects"]
+    assert names == ["sb_so_optimal_function_describer", "rb_so_repetition_describer", "rb_co_repetition_describer"]
     for name in names:
         played = episodes(describe_run, name)
         assert len(played) == 2, name
@@ -95,7 +95,7 @@ def test_describer_prompt_asks_for_instructions_not_code():
 
 def test_builder_sees_instruction_not_target(describe_run):
     """The builder's prompt holds the describer's words (no slot left, no target grid)."""
-    e = episodes(describe_run, "simple_boards")[0]
+    e = episodes(describe_run, "sb_so_optimal_function_describer")[0]
     requests = json.loads((e["dir"] / "player_2.requests.json").read_text())
     prompt = json.dumps(requests)
     text = e["interactions"]["sartco_instruction"]["text"]

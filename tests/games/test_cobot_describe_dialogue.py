@@ -252,7 +252,7 @@ def test_report_has_the_dialogue_table_and_plot(run):
     md = (run["tables"] / "dialogue.md").read_text()
     assert "![ES after round k](dialogue_rounds.svg)" in md
     rows = {r.split(" | ")[2]: r for r in md.splitlines() if r.startswith("| mock")}
-    assert "simple_boards_clarify_correct" in rows and "scripted_correct" in rows
+    assert "sb_so_optimal_function_describer_clarify_correct" in rows and "scripted_correct" in rows
     svg = (run["tables"] / "dialogue_rounds.svg").read_text()
     assert svg.startswith("<svg") and "mock — correct</text>" in svg and "<polyline" in svg
     table3 = (run["tables"] / "table3.md").read_text()
@@ -261,4 +261,4 @@ def test_report_has_the_dialogue_table_and_plot(run):
     with (run["tables"] / "dialogue.csv").open() as f:
         by_experiment = {r["experiment"]: r for r in csv.DictReader(f)}
     assert by_experiment["scripted_correct"]["episodes"] == "5"
-    assert float(by_experiment["simple_boards_correct"]["es_at_n"]) == 100.0
+    assert float(by_experiment["sb_so_optimal_function_describer_correct"]["es_at_n"]) == 100.0

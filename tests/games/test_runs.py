@@ -116,8 +116,10 @@ def test_run_json_keeps_no_secret():
 
 def test_cobot_describe_is_the_one_shot_game_alone():
     """One meaning per leaderboard column: `clem run -g cobot_describe` plays the paper's one-shot
-    mode only; the dialogue modes are the entry cobot_describe_dialogue; episode ids are unique
-    over both (the generator numbers them as one file would)."""
+    mode only; the dialogue modes are the entry cobot_describe_dialogue. Both files follow the one
+    convention of every instance file: experiments named <cell>_<task>_<source>[_<mode>]
+    (sartco.dataset.experiment_name), game_id from 0 in each, the same board under the same id
+    in every mode."""
     from clemcore.clemgame import GameRegistry
 
     registry = GameRegistry.from_directories_and_cwd_files()
@@ -127,8 +129,15 @@ def test_cobot_describe_is_the_one_shot_game_alone():
         data = json.loads((Path(spec.game_path) / "in" / f"{spec.instances}.json").read_text())
         files[game] = data["experiments"]
     assert {e.get("mode", "oneshot") for e in files["cobot_describe"]} == {"oneshot"}
-    assert [e["name"] for e in files["cobot_describe"]] == \
-        ["simple_boards", "regular_boards_simple_objects", "regular_boards_complex_objects"]
-    assert {e.get("mode") for e in files["cobot_describe_dialogue"]} == {"clarify", "correct", "clarify_correct"}
-    ids = [i["game_id"] for experiments in files.values() for e in experiments for i in e["game_instances"]]
-    assert len(ids) == len(set(ids)) == 1560
+    oneshot = ["sb_so_optimal_function_describer", "rb_so_repetition_describer", "rb_co_repetition_describer"]
+    modes = ("clarify", "correct", "clarify_correct")
+    assert [e["name"] for e in files["cobot_describe"]] == oneshot
+    assert [(e["name"], e["mode"]) for e in files["cobot_describe_dialogue"]] == \
+        [(f"{name}_{mode}", mode) for mode in modes for name in oneshot]
+    experiments = [e for game in files.values() for e in game]
+    assert sum(len(e["game_instances"]) for e in experiments) == 1560
+    boards = {}
+    for e in experiments:
+        assert [i["game_id"] for i in e["game_instances"]] == list(range(130)), e["name"]
+        for i in e["game_instances"]:
+            assert boards.setdefault((e["board_type"], e["object_type"], i["game_id"]), i["board_id"]) == i["board_id"]

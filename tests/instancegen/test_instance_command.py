@@ -14,6 +14,7 @@ from pathlib import Path
 import pytest
 
 from sartco.cli import main as sartco_main
+from sartco.dataset import REGULAR_COMPLEX, REGULAR_SIMPLE, SIMPLE, board_kind, experiment_name, kind_named
 from sartco.instancegen.command import MODES, generate
 from sartco.instancegen.legacy import parse
 from sartco.instancegen.options import DEFAULTS
@@ -146,3 +147,33 @@ def test_a_fresh_run_on_a_dataset_without_config_or_train_split_says_which_and_e
     err = capsys.readouterr().err
     assert err.startswith(f"sartco instances: {message.replace('{tmp}', str(tmp_path))}") and err.count("\n") == 1
     assert before == {p: p.stat().st_mtime_ns for p in before}
+
+
+COMMITTED = [("cobot_instruct", name) for name in ("instances", "instances_ablations", "instances_feedback",
+                                                   "instances_smoke")] + \
+            [("cobot_describe", name) for name in ("instances", "instances_slice", "instances_dialogue",
+                                                   "instances_dialogue_slice")]
+
+
+@pytest.mark.parametrize("game, name", COMMITTED)
+def test_every_committed_file_keeps_the_one_convention(game, name):
+    """Both games: an experiment is named by sartco.dataset.experiment_name from its own fields
+    (<cell>_<task>_<source>, then _<variant> when it has one) and counts game_id from 0."""
+    experiments = json.loads((REPO / "games" / game / "in" / f"{name}.json").read_text())["experiments"]
+    for e in experiments:
+        kind = board_kind(e["board_type"], e["object_type"])
+        variant = e.get("mode") or (e.get("ablation") and "{kind}_{value}".format(**e["ablation"]))
+        feedback = "feedback" if e.get("feedback_of") else None
+        assert e["name"] == experiment_name(kind, e["task"], e["source"], variant, feedback)
+        assert e.get("feedback_of") in (None, experiment_name(kind, e["task"], e["source"], variant))
+        assert [i["game_id"] for i in e["game_instances"]] == list(range(len(e["game_instances"])))
+
+
+def test_the_naming_rule():
+    assert experiment_name(SIMPLE, "first_order", "template") == "sb_so_first_order_template"
+    assert experiment_name(REGULAR_COMPLEX, "repetition", "describer", "clarify_correct") == \
+        "rb_co_repetition_describer_clarify_correct"
+    assert experiment_name(REGULAR_SIMPLE, "repetition", "org/model", None, "feedback") == \
+        "rb_so_repetition_org_model_feedback"
+    with pytest.raises(ValueError):
+        kind_named("simple_boards")  # one vocabulary of kinds: key, prefix, cell

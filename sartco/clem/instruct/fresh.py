@@ -61,8 +61,8 @@ class FreshInstanceGenerator(InstructGenerator):
                            "source": boards, "seed": fresh_seed if boards == "fresh" else None, **where,
                            "generator_seed": seed, "n_examples": n_examples}
                 suffix = "published" if boards == "published" else f"fresh{fresh_seed}"
-                exp = self.experiment(f"{kind.cell}_{task}_{SOURCE}_{suffix}", kind, task, SOURCE, "test", dataset,
-                                      boards=boards, fresh_seed=fresh_seed)
+                exp = self.experiment(kind, task, SOURCE, "test", dataset, variant=suffix, boards=boards,
+                                      fresh_seed=fresh_seed)
                 self.add_episodes(exp, records[:per_experiment], task, SOURCE, pool, seed, n_examples)
         print(f"fresh boards (seed {fresh_seed}): {sum(report.boards.values())} "
               f"({', '.join(f'{k} {n}' for k, n in report.boards.items())}); also in the published data or the "

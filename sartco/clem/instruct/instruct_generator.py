@@ -1,16 +1,18 @@
 """The base of cobot_instruct's instance generators (sartco.instancegen.instruct and
-sartco.clem.instruct.fresh): one experiment per cell, with or without execution feedback, and its episodes
-from board records, each with its in-context examples."""
+sartco.clem.instruct.fresh): one experiment per cell, with or without execution feedback, named by
+sartco.dataset.experiment_name, and its episodes from board records, each with its in-context
+examples, game_id counted from 0 in each experiment."""
 from __future__ import annotations
 
 from sartco.clem.core.episodes import instruct_episode
 from sartco.clem.core.instance_values import InstanceGenerator
-from sartco.dataset import BoardKind
+from sartco.dataset import BoardKind, experiment_name
 from sartco.episode import InstructExperiment
 from sartco.instances.examples import select_examples
 from sartco.instances.prompts import SECTIONS
 
-FEEDBACK_SUFFIX = "_feedback"
+FEEDBACK = "feedback"           # the variant of the feedback experiments: <cell>_<task>_<source>_feedback
+FEEDBACK_SUFFIX = f"_{FEEDBACK}"  # and of their files: instances_feedback.json
 
 
 class InstructGenerator(InstanceGenerator):
@@ -21,13 +23,14 @@ class InstructGenerator(InstanceGenerator):
         super().__init__(game_dir)
         self.feedback_attempts = feedback_attempts
 
-    def experiment(self, name: str, kind: BoardKind, task: str, source: str, split: str, dataset: dict,
-                   ablation: dict | None = None, **extra):
-        """extra: more experiment fields (before game_instances)."""
-        feedback = {}
+    def experiment(self, kind: BoardKind, task: str, source: str, split: str, dataset: dict,
+                   ablation: dict | None = None, variant: str | None = None, **extra):
+        """The experiment experiment_name(kind, task, source, variant) (with feedback: its
+        _feedback variant); extra: more experiment fields (before game_instances)."""
+        name, feedback = experiment_name(kind, task, source, variant), {}
         if self.feedback_attempts is not None:
             feedback = {"attempts": self.feedback_attempts, "feedback_of": name}
-            name += FEEDBACK_SUFFIX
+            name = experiment_name(kind, task, source, variant, FEEDBACK)
         exp = self.add_experiment(name)
         exp.update(InstructExperiment(board_type=kind.board, object_type=kind.object, task=task, source=source,
                                       split=split, ablation=ablation, **feedback, dataset=dataset), **extra)

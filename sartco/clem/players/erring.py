@@ -21,7 +21,8 @@ again at the rate p on the pieces it adds (sartco.clem.describe.erring_dialogue)
 
 Seeding: every draw comes from random.Random("SEED:board_id:game_id:task:purpose:round") (SEED =
 42, the player seed; str seeds hash the same in every process), so a run is byte-identical to
-the next one.
+the next one. game_id counts from 0 in each experiment and cobot_describe's modes play the same
+boards in the same order, so a board meets the same draws in every mode: the modes are paired.
 
 - Slip, draw_slips(n, rng), slip_steps(steps, slips, ...), slip_arrangement(arr, slips, ...)
 - repaired(slips, rng)   the slips left after one readable feedback
