@@ -13,13 +13,14 @@ its meaning in plain words (sartco.world.category_meaning); the harness's reason
 harness_error; EM and CodeBLEU where the scorer computed them; puts; for the paper protocol its
 EM / CB / ES and the same per turn; for dialogues ES by round; then every other score of the game.
 The rows are lines of monospace text (`.sartco-scores`, a <div> each: label, then the value in an
-aligned column that a long value wraps to), each value rounded to 4 significant digits, "n/a" for NaN. The exact values are on the
-card as scores.json has them (JSON, NaN as NaN): the episode scores in the card's `data-scores`,
-the paper protocol's per-turn scores in its turn table's `data-turns` (keyed as scores.json's
-"round scores"). Every text is escaped (sartco.text.escape / one_line, then HTML).
+aligned column that a long value wraps to), each value rounded to 4 significant digits, "n/a" for
+NaN. The exact values are on the card as scores.json has them (JSON, NaN as NaN): the episode
+scores in the card's `data-scores`, the paper protocol's per-turn scores in its turn table's
+`data-turns` (keyed as scores.json's "round scores"). Every text is escaped (sartco.text.escape /
+one_line, then HTML).
 
-The card has as few tags as it can (a line of text per row, not a table with a tag per cell and value):
-clemcore's transcript builder parses every tag of every message with Python-Markdown's HTML
+The card has as few tags as it can (a line of text per row, not a table with a tag per cell and
+value): clemcore's transcript builder parses every tag of every message with Python-Markdown's HTML
 parser, and a card of ~100 tags cost about as much as the rest of an episode's transcript
 (issue 23's 10 % budget for make main).
 
@@ -131,7 +132,7 @@ def card_html(scores: dict, outcome_line: str | None) -> str:
     turns = [k for k in sorted(rounds, key=int) if PAPER_SCORES["em"] in rounds[k]]
     if turns:
         head = "".join(f'<th>{html.escape(n.split()[1])}</th>' for n in PAPER_SCORES.values())
-        body = "".join(f"<tr><td>{int(k) + 1}</td>" + "".join(f"<td>{shown(rounds[k].get(n))}</td>"
+        body = "".join(f"<tr><td>{int(k) + 1}</td>" + "".join(f"<td>{html.escape(shown(rounds[k].get(n)))}</td>"
                                                             for n in PAPER_SCORES.values()) + "</tr>" for k in turns)
         data = _data({k: {n: rounds[k][n] for n in PAPER_SCORES.values() if n in rounds[k]} for k in turns})
         parts.append(f'<table class="sartco-turns" data-turns="{data}"><tr><th>paper turn</th>{head}</tr>{body}</table>')
