@@ -55,15 +55,15 @@ def _compile_all(sources) -> tuple[float, float]:
 
 
 def _worker_cpu() -> float:
-    """CPU seconds used so far by this process's live workers (from /proc)."""
+    """CPU seconds used so far by this process's live templates and the children they reaped
+    (from /proc: utime, stime, cutime, cstime)."""
     total = 0.0
-    for worker in pool._workers:
-        if worker.proc is not None:
-            try:
-                fields = Path(f"/proc/{worker.proc.pid}/stat").read_text().rsplit(")", 1)[1].split()
-                total += (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
-            except (OSError, IndexError, ValueError):
-                pass
+    for pid in pool.local().pids():
+        try:
+            fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+            total += sum(map(int, fields[11:15])) / os.sysconf("SC_CLK_TCK")
+        except (OSError, IndexError, ValueError):
+            pass
     return total
 
 

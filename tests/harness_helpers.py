@@ -9,6 +9,7 @@ from sartco.program import driver
 
 FAKE_WORKER = """
 import json, sys
+sys.stdin.readline()  # the seccomp filter
 print('"ready"', flush=True)
 while True:
     header = sys.stdin.readline()

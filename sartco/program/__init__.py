@@ -84,7 +84,8 @@ worker processes); `shutdown()` kills the workers (they restart on the next call
 """
 from .compare import Comparison, compare, judge
 from .execution import MODULE, PAPER, Execution, Limits
-from .pool import execute, execute_many, shutdown
+from .pool import LocalSandbox, shutdown
+from .sandbox import Sandbox, current, execute, execute_many, use
 
 __all__ = ["execute", "execute_many", "shutdown", "compare", "judge", "Execution", "Comparison", "Limits",
-           "MODULE", "PAPER"]
+           "MODULE", "PAPER", "Sandbox", "LocalSandbox", "current", "use"]

@@ -1,31 +1,27 @@
-"""The parent's side of one worker process: start it, send it chunks, read its answers, kill it
-when an answer is late, and the verdict of a program whose worker died.
+"""The parent's side of one template process (worker.py): start it, send it chunks of programs,
+read one line per program, and turn each into an Execution (verdict.py decides the board).
 
-A worker answers each program on its own line, so the parent knows which program is running and
-gives each one `Limits.wall_time` seconds from the moment the previous answer was read. A late
-answer kills the worker (SIGKILL, then reaped) and the program gets `timeout`; a worker that
-dies gets its program `resource_limit` (out of memory: its own exit status, or SIGKILL from the
-kernel) or `runtime_error` (a crash, named by its signal); a worker that could not start or ended
-by another exit (the worker's own code failed, not the program) gives `harness_error`. A worker that
-retires after an answer (a leading "!", see worker.py) is replaced before the next program.
-The rest of the batch goes to a fresh worker. A worker compiles each chunk ahead (worker.py), for
-at most a tenth of a wall time, which the chunk's first program shares: so a kill before the first
-answer of a chunk of several blames nobody yet, and the rest runs again, each program compiled
-at its own turn.
+The template enforces each program's wall time itself (it kills the child at Limits.wall_time)
+and always answers; the parent still gives each answer Limits.wall_time + SLACK seconds, and a
+template that is late, dies, answers garbage, could not start or cannot confine programs is the
+harness's failure (`harness_error`, with the reason), never a program's: no program runs in the
+template. The rest of a batch then goes to a fresh template.
 
-Workers are started from one long-lived thread (`spawn`), so that they die with the parent
+Templates are started from one long-lived thread (`spawn`), so that they die with the parent
 process (worker.py), isolated as `python -I -S` would be (`-s -S -P`: no user site, no site, no
 script or working folder on sys.path; an environment without PYTHON* variables) except for one
 variable that -I would ignore: PYTHONHASHSEED=0, so that str hashes, and with them the order of
-sets and everything built from it, are the same in every worker, run and machine.
+sets and everything built from it, are the same in every child, run and machine. BLAS libraries
+are told to use one thread (a forked child has no other thread, and may start none).
 """
 from __future__ import annotations
 
+import base64
+import binascii
 import fcntl
 import json
 import os
 import select
-import signal
 import subprocess
 import sys
 import threading
@@ -36,41 +32,51 @@ from concurrent.futures import ThreadPoolExecutor
 from sartco.settings import IMPORT_ROOT
 from sartco.world import ErrorCode
 
+from .confine import Unconfinable, compile_filter
 from .execution import MODULE, Execution, Limits
-from .worker import OUT_OF_MEMORY, RETIRED
+from .verdict import decide, failed
 
-E = ErrorCode
-CHUNK = 64  # items per worker round trip
-PATIENCE = 0.01  # most seconds to wait before reading more answers of a running batch: while a
-# worker works, the parent wakes up seldom and reads many answers at once; as the end of the batch
-# nears, the waits shrink to half the estimated rest, so the last answers are read as they come
-START_TIMEOUT = 30.0
-PIPE_SIZE = 1 << 20  # bytes of answers a worker can write ahead of the parent
+CHUNK = 64  # items per template round trip
+SLACK = 10.0  # seconds beyond a program's wall time before the parent gives up on its template
+START_TIMEOUT = 60.0
+PIPE_SIZE = 1 << 20  # bytes of answers a template can write ahead of the parent
 READ_SIZE = 1 << 16  # bytes per read (a read allocates its whole size first)
 _ROOT = str(IMPORT_ROOT)
 ISOLATED = ("-s", "-S", "-P")  # -I without -E (see the module docstring)
 HASH_SEED = "0"
+ONE_THREAD = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS")
 _BOOT = (
     "import sys; sys.path.insert(0, sys.argv[1]); "
-    "from sartco.program.worker import main; sys.exit(main(int(sys.argv[2])))"
+    "from sartco.program.worker import main; sys.exit(main(int(sys.argv[2]), '--breach' in sys.argv[3:]))"
 )
+HOWS = (b"exit", b"signal", b"timeout", b"overflow", b"unconfined")
 
 
 class _Dead(Exception):
-    """The worker process is gone or unusable."""
+    """The template process is gone or unusable."""
 
 
 class Worker:
-    def __init__(self):
+    """One template process and the thread-safe state of reading its answers."""
+
+    def __init__(self, breach: bool = False):
         self.proc: subprocess.Popen | None = None
         self.lines: deque[bytes] = deque()
         self.tail = b""
         self.lock = threading.Lock()
-        self.room = 4096  # bytes the worker's stdin pipe holds
+        self.room = 4096  # bytes the template's stdin pipe holds
+        self.breach = breach
 
     # -- process ---------------------------------------------------------------------------
     def start(self):
-        self.proc = spawn([sys.executable, *ISOLATED, "-c", _BOOT, _ROOT, str(os.getpid())])
+        try:
+            bpf = _filter()
+        except Unconfinable as exc:
+            raise _Dead(f"the sandbox cannot confine programs here: {exc}") from None
+        argv = [sys.executable, *ISOLATED, "-c", _BOOT, _ROOT, str(os.getpid())] + (["--breach"] if self.breach else [])
+        self.proc = spawn(argv)
+        self.proc.stdin.write(base64.b64encode(bpf) + b"\n")
+        self.proc.stdin.flush()
         for pipe in (self.proc.stdin, self.proc.stdout):  # room for items sent ahead and answers that
             try:  # pile up while the parent waits (Linux; elsewhere the default size)
                 fcntl.fcntl(pipe.fileno(), fcntl.F_SETPIPE_SZ, PIPE_SIZE)
@@ -82,8 +88,11 @@ class Worker:
             self.room = 4096  # POSIX guarantees at least PIPE_BUF
         self.lines.clear()
         self.tail = b""
-        if self._readline(time.monotonic() + START_TIMEOUT) != b'"ready"':
+        first = self._readline(time.monotonic() + START_TIMEOUT)
+        if first != b'"ready"':
             self.kill()
+            if first is not None and first.startswith(b"unconfined: "):
+                raise _Dead("the sandbox cannot confine programs here: " + first[12:].decode("ascii", "replace"))
             raise _Dead("the sandbox worker did not start")
 
     def kill(self) -> int | None:
@@ -117,28 +126,24 @@ class Worker:
             self.lines.extend(parts)
         return self.lines.popleft()
 
-    def _send(self, stdin, mode: str, items: list[bytes], rows: int, cols: int, limits: Limits, cache: bool,
-              ahead: bool, semantics: str):
+    def _send(self, stdin, items: list[bytes], rows: int, cols: int, limits: Limits, semantics: str, mode: str):
         """Write the items in chunks. For more than fits in the pipe at once this runs in a thread
-        of its own: the worker finds its next chunk waiting when it finishes one, and a full pipe
+        of its own: the template finds its next chunk waiting when it finishes one, and a full pipe
         never blocks the reading of answers."""
         try:
             for k in range(0, len(items), CHUNK):
                 chunk = items[k:k + CHUNK]
-                header = json.dumps({"limits": limits.as_list(), "rows": rows, "cols": cols, "cache": cache,
-                                     "mode": mode, "items": len(chunk), "ahead": ahead,
-                                     "semantics": semantics}).encode()
+                header = json.dumps({"limits": limits.as_list(), "rows": rows, "cols": cols, "semantics": semantics,
+                                     "items": len(chunk), "mode": mode}).encode()
                 stdin.write(b"\n".join([header, *chunk]) + b"\n")
                 stdin.flush()
         except (OSError, ValueError):
-            pass  # the worker died or was killed: the reader finds out and reports it
+            pass  # the template died or was killed: the reader finds out and reports it
 
-    def run(self, mode: str, items: list[bytes], rows: int, cols: int, limits: Limits, cache: bool,
-            semantics: str = MODULE) -> list:
-        """One answer per item: the worker's answer line (bytes), or an Execution for an item
-        whose worker timed out or died (the rest then goes to a fresh worker)."""
-        results: list = []
-        ahead = True  # the worker compiles each chunk ahead (see worker.py)
+    def run(self, items: list[bytes], rows: int, cols: int, limits: Limits, semantics: str = MODULE,
+            mode: str = "code") -> list[Execution]:
+        """One Execution per item (a program's source as a JSON string), in order."""
+        results: list[Execution] = []
         while len(results) < len(items):
             todo = items[len(results):]
             try:
@@ -146,67 +151,57 @@ class Worker:
                     self.start()
             except (_Dead, OSError, ValueError) as exc:
                 self.kill()
-                results.extend(failed(E.HARNESS_ERROR, f"sandbox unavailable: {exc}") for _ in todo)
+                results.extend(failed(ErrorCode.HARNESS_ERROR, f"sandbox unavailable: {exc}") for _ in todo)
                 break
-            send = (self.proc.stdin, mode, todo, rows, cols, limits, cache, ahead, semantics)
+            send = (self.proc.stdin, todo, rows, cols, limits, semantics, mode)
             writer = None
             if len(todo) <= CHUNK and sum(map(len, todo)) + 4096 < self.room:
                 self._send(*send)  # one chunk that fits in the empty pipe: the write cannot block
             else:
                 writer = threading.Thread(target=self._send, args=send, daemon=True)
                 writer.start()
-            started = time.monotonic()
-            for k in range(len(todo)):
-                if k and not self.lines and not select.select([self.proc.stdout], [], [], 0)[0]:
-                    # nothing to read: let answers pile up, so that one wake-up reads many
-                    rest = (len(todo) - k) * (time.monotonic() - started) / k
-                    if rest > 0.002:
-                        time.sleep(min(PATIENCE, rest / 2))
+            for _ in todo:
                 try:
-                    line = self._readline(time.monotonic() + limits.wall_time)
-                    failure = None if line is not None else failed(
-                        E.TIMEOUT, f"the program ran longer than {limits.wall_time:g} s")
+                    line = self._readline(time.monotonic() + limits.wall_time + SLACK)
+                    fault = None if line is not None else "the sandbox worker did not answer in time"
                 except (_Dead, OSError):
-                    line, failure = None, _died(self.kill())
-                if line is not None and line[:1] == RETIRED:  # the worker retired after answering
-                    results.append(line[1:])
-                    self.kill()
-                    break
+                    line, fault = None, f"the sandbox worker ended unexpectedly (status {self.kill()})"
                 if line is not None:
-                    results.append(line)
-                    continue
-                self.kill()
-                if ahead and k % CHUNK == 0 and len(todo) - k > 1:
-                    # no answer yet of a chunk the worker compiled ahead: any of its programs may
-                    # be at fault, so the rest runs again, each compiled at its own turn
-                    ahead = False
+                    result = _answer(line, limits)
+                    results.append(result)
+                    if result is not None:
+                        continue
+                    results[-1] = failed(ErrorCode.HARNESS_ERROR, f"garbled answer from the sandbox worker: {line[:60]!r}")
                 else:
-                    results.append(failure)
+                    results.append(failed(ErrorCode.HARNESS_ERROR, fault))
+                self.kill()  # the template failed: the rest goes to a fresh one
                 break
             if writer is not None:
                 writer.join()  # done, or unblocked by the kill (a closed pipe)
         return results
 
 
-def _died(status: int | None) -> Execution:
-    """The verdict of a program whose worker ended without answering it."""
-    if status == OUT_OF_MEMORY:
-        return failed(E.RESOURCE_LIMIT, "the sandbox worker ran out of memory")
-    if status in (-signal.SIGKILL, -signal.SIGXCPU):  # the kernel's OOM killer or a CPU limit
-        return failed(E.RESOURCE_LIMIT, f"the sandbox worker was killed ({signal.Signals(-status).name}): "
-                                         f"out of memory or CPU time")
-    if status is not None and status < 0:
-        try:
-            name = signal.Signals(-status).name
-        except ValueError:
-            name = f"signal {-status}"
-        return failed(E.RUNTIME_ERROR, f"the program crashed the sandbox worker ({name})")
-    # an exit status of the worker's own (its code failed, or it was ended from outside): not the program's
-    return failed(E.HARNESS_ERROR, f"the sandbox worker ended unexpectedly (status {status})")
+def _answer(line: bytes, limits: Limits) -> Execution | None:
+    """The Execution of one answer line of the template, None when the line is garbled."""
+    parts = line.split(b" ")
+    if len(parts) != 3 or parts[0] not in HOWS or not parts[1].lstrip(b"-").isdigit():
+        return None
+    try:
+        answer = base64.b64decode(parts[2], validate=True)
+    except (binascii.Error, ValueError):
+        return None
+    return decide(parts[0], int(parts[1]), answer, limits.wall_time)
 
 
-def failed(code: ErrorCode, message: str) -> Execution:
-    return Execution(False, code, message, {}, 0)
+_bpf: bytes | None = None
+
+
+def _filter() -> bytes:
+    """The seccomp filter, compiled once per process (confine.compile_filter)."""
+    global _bpf
+    if _bpf is None:
+        _bpf = compile_filter()
+    return _bpf
 
 
 _spawner: tuple[int, ThreadPoolExecutor] | None = None  # (pid, executor)
@@ -214,8 +209,8 @@ _spawner_lock = threading.Lock()
 
 
 def spawn(argv: list[str]) -> subprocess.Popen:
-    """Start a worker from one long-lived thread: a worker's parent-death signal fires when the
-    thread that started it ends (prctl(2)), and the threads that drive workers come and go."""
+    """Start a template from one long-lived thread: its parent-death signal fires when the
+    thread that started it ends (prctl(2)), and the threads that drive templates come and go."""
     global _spawner
     with _spawner_lock:
         if _spawner is None or _spawner[0] != os.getpid():
@@ -228,7 +223,8 @@ def spawn(argv: list[str]) -> subprocess.Popen:
 
 
 def _environment() -> dict[str, str]:
-    """The parent's environment without PYTHON* variables, and the fixed hash seed."""
+    """The parent's environment without PYTHON* variables, the fixed hash seed, one BLAS thread."""
     env = {k: v for k, v in os.environ.items() if not k.startswith("PYTHON")}
     env["PYTHONHASHSEED"] = HASH_SEED
+    env.update(dict.fromkeys(ONE_THREAD, "1"))
     return env

@@ -15,7 +15,7 @@ import gc
 from itertools import chain
 from operator import is_
 
-from sartco.world import WorldError
+from sartco.world import Board, WorldError
 from sartco.world.rules import replay
 
 FORGED = "the board was changed outside put"
@@ -23,19 +23,26 @@ FORGED = "the board was changed outside put"
 
 def board_result(board) -> tuple[dict, int, str | None]:
     """(cells, puts, problem): what `put` placed on `board`, and None when its storage holds
-    exactly that, else the one-line reason (FORGED ...). The cyclic collector is off meanwhile:
-    this work makes no cycles, and a collection here would free a cycle the program left behind
-    before the worker's retirement check (worker.py) sees the memory it held."""
+    exactly that, else the one-line reason (FORGED ...)."""
+    fresh, problem = checked(board)
+    return ({}, 0, problem) if fresh is None else (fresh.cells(), fresh.puts, problem)
+
+
+def checked(board) -> tuple[Board | None, str | None]:
+    """(the board that put placed, problem): `board`'s log replayed on a fresh board, and None
+    when `board`'s storage holds exactly that, else the one-line reason (FORGED ...); no board
+    when the log is not one that put wrote. The cyclic collector is off meanwhile: this work
+    makes no cycles."""
     collecting = gc.isenabled()
     gc.disable()
     try:
         try:
             fresh = replay(board)
         except (WorldError, TypeError, ValueError):  # a log that put did not write
-            return {}, 0, f"{FORGED} (its log of puts is not one that put wrote)"
+            return None, f"{FORGED} (its log of puts is not one that put wrote)"
         if board.puts != fresh.puts or not _same(board.stacks, fresh.stacks):
-            return fresh.cells(), fresh.puts, FORGED
-        return fresh.cells(), fresh.puts, None
+            return fresh, FORGED
+        return fresh, None
     finally:
         if collecting:
             gc.enable()

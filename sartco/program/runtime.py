@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import builtins
 import gc
+import json
 import sys
 from itertools import repeat
 from operator import length_hint
@@ -40,7 +41,7 @@ from . import attributes, chance
 from .classes import SERIALS
 from .records import build_class
 from .modules import forget_typing, import_module, load
-from .result import board_result
+from .result import checked
 
 E = ErrorCode
 MESSAGE_CHARS = 400
@@ -212,17 +213,64 @@ def namespace(board, init_board, name: str = "__main__") -> dict:
 
 def run(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE, source: str = "") -> list:
     """Run one program, given what compile_program made of it; return [ok, code or None,
-    message, cells, puts]. The message is clean (execution.clean). A budget stop, a MemoryError or
-    an internal error sets SPOILED: the worker answers, then retires. PAPER semantics: separate
-    globals and locals (namespaces.paper), and the board passed in is the one scored."""
+    message, cells, puts] (see _run)."""
+    ok, error, message, board = _run(compiled, rows, cols, limits, semantics, source)
+    return [ok, error, message, {} if board is None else board.cells(), 0 if board is None else board.puts]
+
+
+def answer(source, rows: int, cols: int, limits, semantics: str = MODULE) -> bytes:
+    """What a child sends its template for one program (worker.py): ASCII JSON
+    [ok, code or None, message, rows, cols, log], `log` the puts of the result board as one flat
+    list shape, colour, x, y, shape, ... of plain str and int. The parent replays the log and
+    decides the board (verdict.py): nothing else of the child's board leaves it."""
+    ok, error, message, board = _run(compile_program(source, limits, cache=False), rows, cols, limits, semantics,
+                                     source if type(source) is str else "")
+    return _encode(ok, error, message, board)
+
+
+def _encode(ok, error, message, board) -> bytes:
+    log: list = []
+    if board is not None:
+        for (shape, color), x, y in board.log:
+            log += (str(shape), str(color), int(x), int(y))
+    shape = (board.rows, board.cols) if board is not None else (0, 0)
+    return json.dumps([ok, error, message, *shape, log]).encode("ascii")
+
+
+def breached(source: str, rows: int, cols: int) -> bytes:
+    """The assume-breach tests' run (worker.py mode "breach"): `source` exec'd with Python's real
+    builtins and none of the sandbox's checks, as if every one had fallen; the answer as answer()
+    makes it from the global `board` or the last board made. Only the kernel's walls hold."""
+    last = [Board(rows, cols)]
+
+    def init_board(rows=DEFAULT_ROWS, cols=DEFAULT_COLS):
+        last[0] = Board(rows, cols)
+        return last[0]
+
+    env = {"__builtins__": builtins, "__name__": "__main__", "board": last[0], "put": put, "init_board": init_board}
+    ok, error, message = True, None, ""
+    try:
+        exec(compile(source, "<program>", "exec"), env)
+    except BaseException as exc:
+        ok, error, message = False, _classify(exc), clean(_describe(exc))
+    result = env.get("board")
+    fresh, _ = checked(result if type(result) is Board else last[0])
+    return _encode(ok, error, message, fresh)
+
+
+def _run(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE, source: str = "") -> tuple:
+    """Run one program, given what compile_program made of it; return (ok, code or None,
+    message, board): `board` is the result board as put built it (result.checked's replay), or
+    None. The message is clean (execution.clean). PAPER semantics: separate globals and locals
+    (namespaces.paper), and the board passed in is the one scored."""
     global _STEPS
     code, error, message = compiled
     try:
         board = Board(rows, cols)
     except WorldError as exc:
-        return [False, exc.code, exc.message, {}, 0]
+        return False, exc.code, exc.message, None
     if code is None:
-        return [False, error, message, {}, 0]
+        return False, error, message, None
     last = [board]
 
     def init_board(rows=DEFAULT_ROWS, cols=DEFAULT_COLS):
@@ -251,6 +299,7 @@ def run(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE, 
     if length_hint(steps) == 0 or budget.STOPPED is not None:
         error, message = _verdict(budget.STOPPED, limits)
     budget.STOPPED = None
+    fresh = None
     try:
         result_board = board if semantics == PAPER else env.get("board")
         if type(result_board) is not Board:
@@ -258,18 +307,18 @@ def run(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE, 
         env.clear()
         scope.clear()
         SERIALS.clear()  # (the program's objects go with it)
-        cells, puts, forged = board_result(result_board)  # only what put placed leaves the worker
+        fresh, forged = checked(result_board)  # only what put placed leaves the worker
         if forged is not None:
             error, message = E.FORBIDDEN, forged
         message = clean(message)
     except MemoryError:
-        error, message, cells, puts = E.RESOURCE_LIMIT, "the sandbox ran out of memory while reading the board", {}, 0
+        error, message, fresh = E.RESOURCE_LIMIT, "the sandbox ran out of memory while reading the board", None
     except Exception as exc:  # never `ok` after an internal error
-        error, message, cells, puts = E.HARNESS_ERROR, clean(f"internal error: {type(exc).__name__}"), {}, 0
+        error, message, fresh = E.HARNESS_ERROR, clean(f"internal error: {type(exc).__name__}"), None
         _spoil()
     if error in (E.TIMEOUT, E.RESOURCE_LIMIT):
         _spoil()
-    return [error is None, error, message, cells, puts]
+    return error is None, error, message, fresh
 
 
 def _verdict(exc: BaseException | None, limits) -> tuple:

@@ -15,13 +15,12 @@ import threading
 from collections import deque
 
 from sartco.errors import UserError
-from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, ErrorCode
+from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
 from sartco.world.board import MAX_SIDE
 
+from .execution import Limits
 from .lines import finish, parse_line
-from .pool import dispatch
-from .driver import failed
-from .execution import Execution, Limits
+from .sandbox import execute_many
 
 CHUNK = 1 << 16
 IN_FLIGHT = 2  # batches being run at once (the next one queues on each worker's lock)
@@ -87,36 +86,17 @@ def _batches(stream, batch: int):
         yield [(number + 1, tail)]
 
 
-def _code_key(raw: bytes) -> bytes:
-    """The raw JSON text of the line's "code" string, found without decoding the line. Only
-    for routing repeats of a source to the same worker (its code cache): a line where this
-    finds something else still runs correctly, at worst on the other worker."""
-    start = raw.find(b'"code"')
-    if start < 0:
-        return b""
-    end = raw.find(b'"', raw.find(b'"', start + 6) + 1)
-    while end > 0 and raw[end - 1] == 0x5C:  # an escaped quote (or an escaped backslash: harmless)
-        end = raw.find(b'"', end + 1)
-    return raw[start:end]
-
-
 def _answers(lines, rows, cols, limits, workers, cache) -> bytes:
-    """The output text of one batch (every line answered, whatever happens)."""
-    keys = [_code_key(raw) for _, raw in lines] if cache else None
-    items = [b"%d %s" % (number, raw) for number, raw in lines]
-    try:
-        answers = dispatch("line", items, keys, rows, cols, limits, workers, cache)
-    except Exception as exc:  # every line gets an answer, whatever happens
-        answers = [failed(ErrorCode.HARNESS_ERROR, f"sandbox failure: {exc}")] * len(items)
+    """The output text of one batch (every line answered, whatever happens): each line parsed
+    here, its program run in the sandbox in use, the answer formatted here (lines.py)."""
+    parsed = [parse_line(number, raw, check_target=False) for number, raw in lines]
+    todo = [k for k, p in enumerate(parsed) if p[3] is None]
+    runs = execute_many([parsed[k][1] for k in todo], rows, cols, limits, workers=workers, cache=cache)
+    done = dict(zip(todo, runs))
     text = []
-    for (number, raw), ans in zip(lines, answers):
-        if type(ans) is bytes and ans[:1] == b"{" and ans[-1:] == b"}":
-            text.append(ans)
-        else:  # timeout, dead worker or a garbled answer: answer here, as the worker would have
-            if type(ans) is not Execution:
-                ans = failed(ErrorCode.HARNESS_ERROR, f"garbled answer from the sandbox worker: {ans!r:.60}")
-            parsed = parse_line(number, raw, check_target=False)
-            text.append(finish(number, parsed, lambda ans=ans: (ans.ok, ans.error, ans.message, ans.cells)).encode())
+    for k, (number, _) in enumerate(lines):
+        ex = done.get(k)
+        text.append(finish(number, parsed[k], lambda ex=ex: (ex.ok, ex.error, ex.message, ex.cells)).encode())
     return b"\n".join(text) + b"\n"
 
 
@@ -124,10 +104,9 @@ def serve(inp, out, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, limits: 
           workers: int | None = None, batch: int = 1024, cache: bool = True) -> int:
     """The JSON-lines loop over binary streams; returns the number of lines answered.
 
-    The workers parse, run, compare and format each line (lines.py); the parent finds each
-    line's "code" text (with the cache on) only to send repeats of a source to the same worker
-    (with the cache off, lines alternate between the workers), and formats the answer
-    itself only for a line whose worker timed out or died.
+    This process parses each line, runs its program in the sandbox in use (a confined process
+    per program; with the cache on, equal sources of a batch run once), compares and formats
+    the answer (lines.py).
 
     Pipelined: a reader thread collects the next batch while the current one runs, and up to
     two batches are in flight, so a worker that finishes its share of one batch goes on with

@@ -1,47 +1,67 @@
-"""The worker process: reads batches of programs, runs them one by one, answers line by line.
+"""The template process: it imports what programs need, builds the kernel's walls, runs no
+program itself, and forks one confined child per program. The child runs that one program and
+exits, so nothing a program does outlives it: no process runs a second program.
 
-Protocol (lines of bytes):
-  worker -> parent, once at start:  "ready"
-  parent -> worker, per batch: a header {"limits": [...Limits fields...], "rows": R, "cols": C,
-      "cache": bool, "mode": "code" | "line", "items": K, "ahead": bool}, then K item lines:
-      mode "code": the source as a JSON string;
-      mode "line": "<input line number> <raw input line of sartco execute>".
-  worker -> parent, one line per item, flushed at once:
-      mode "code": [ok, code, message, cells, puts]
-      mode "line": the finished output line of `sartco execute` (see lines.py).
-The parent times each answer and kills the worker when one is late (a loop in C code cannot be
-stopped any other way). The worker never outlives the parent: it exits when its stdin closes,
-and the kernel kills it when the parent dies (PR_SET_PDEATHSIG), even inside a long C loop.
+Protocol with the parent (driver.py), lines of bytes:
+  parent -> template, once at start: the seccomp filter, a BPF program in base64 (confine.py)
+  template -> parent, once at start: "ready", or "unconfined: <why>" (then it exits: the kernel's
+      walls cannot be built here, and no program runs unconfined)
+  parent -> template, per chunk: a header {"limits": [...Limits fields...], "rows": R, "cols": C,
+      "semantics": "module" | "paper", "items": K, "mode": "code" | "breach"}, then K lines, each a
+      program's source as a JSON string
+  template -> parent, one line per item, in order: b"<how> <status> <answer as base64>", where
+      <how> is how the child ended: "exit" (status: its exit status), "signal" (status: the signal
+      that killed it), "timeout" (killed at Limits.wall_time), "overflow" (killed: it wrote more
+      than ANSWER_BYTES), "unconfined" (it ended before its walls were up: no program ran).
+The template decides nothing about the program: the parent reads the child's answer (a put log
+of plain values and an outcome, see runtime.answer) and decides the board (verdict.py).
 
-A worker that must not run another program (runtime.SPOILED after a budget stop, a MemoryError
-or an internal error, or resident memory more than RETIRE_BYTES above its start after a program,
-e.g. a reference cycle the program left behind) writes that
-program's answer with a leading "!" and exits: the parent passes the answer on and sends the
-rest of the batch to a fresh worker. So no program starts in a worker that a previous one
-filled, and nothing a failure left behind (caches, cycles) is seen again.
-With "ahead" (and K > 1) the worker first parses and compiles the batch's programs, for at most
-AHEAD_SHARE of a wall time, then runs them one by one: the parser and compiler stay warm in the
-CPU caches, about 5 % less work per program than alternating compiling with running. Each
-program is still compiled on its own (no code is shared between items unless "cache" says so).
+The child, between fork and the program's first line (`_child`): its descriptors become /dev/null
+(0, 1, 2) and its answer pipe (3), every other one closed; then the rlimits, death with the
+template, and the seccomp filter (confine.py); then it writes CONFINED to the pipe, so the
+template knows that the walls were up before anything of the program ran. A child's failure
+after that is the program's: its exit status and signals are reported as they are.
 
-Hardening at start: RLIMIT_AS (raised to base + Limits.memory per batch), no core files, no
-file may grow (RLIMIT_FSIZE 0), no new processes (RLIMIT_NPROC 0; ignored for root).
+Mode "breach" runs a source with Python's real builtins and none of the sandbox's checks (as if
+every one had fallen), inside the same walls; only a template started with `--breach` (the
+tests' assume-breach harness, tests/program/test_walls.py) accepts it.
+
+The template never outlives the parent (PR_SET_PDEATHSIG; its stdin closing ends it) and its
+children never outlive it (the same, set in each child).
 """
 from __future__ import annotations
 
+import base64
+import errno
 import gc
 import json
 import os
-import resource
+import select
+import signal
 import sys
 import time
 
-
-OUT_OF_MEMORY = 3  # exit status: the parent reports resource_limit for the current item
-RETIRED = b"!"  # the first byte of the last answer of a worker that retires (the parent then replaces it)
-RETIRE_BYTES = 64 * 1024 * 1024  # resident memory growth after which a worker retires
+OUT_OF_MEMORY = 3  # a child's exit status after a MemoryError outside the program's own run
+FAILED = 4  # a child's exit status when its own code failed after the walls were up
+CONFINED = b"C"  # the first byte of every answer: written by the child once its walls are up
+ANSWER_BYTES = 4 << 20  # the most a child may write (a 64 x 64 board's full log is under 1 MiB)
 PR_SET_PDEATHSIG = 1
-AHEAD_SHARE = 0.1  # of Limits.wall_time: the longest a worker compiles a batch ahead
+MAX_FD = 1 << 16
+# modules that Python imports lazily while it compiles or runs a program (a confined child can
+# open no file, so none can be imported there): the parser's NFKC of non-ASCII names (PEP 3131)
+PRELOAD = ("unicodedata",)
+
+
+def _die_with_parent(parent: int) -> None:
+    """SIGKILL when the thread that started this process (driver.py's spawner) ends."""
+    import ctypes
+
+    try:
+        ctypes.CDLL(None, use_errno=True).prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+    except (OSError, AttributeError):  # not Linux: the stdin pipe still ends the template
+        pass
+    if parent and os.getppid() != parent:  # the parent died before prctl
+        os._exit(0)
 
 
 def _vm_bytes() -> int:
@@ -49,116 +69,186 @@ def _vm_bytes() -> int:
         return int(f.read().split()[0]) * os.sysconf("SC_PAGE_SIZE")
 
 
-def _limit(kind, soft):
-    try:
-        _, hard = resource.getrlimit(kind)
-        if hard != resource.RLIM_INFINITY and soft > hard:
-            soft = hard
-        resource.setrlimit(kind, (soft, hard))
-    except (ValueError, OSError):
-        pass
+class Template:
+    """What the children are forked from: the filter, the template's size, /dev/null."""
+
+    def __init__(self, bpf: bytes, breach: bool = False):
+        from . import confine, runtime
+
+        self.runtime = runtime
+        for name in PRELOAD:
+            __import__(name)
+        self.filter = confine.Walls(bpf)  # raises confine.Unconfinable
+        self.breach = breach
+        self.null = os.open(os.devnull, os.O_RDWR)
+        if breach:  # the assume-breach tests attack the kernel's walls with these already imported
+            import ctypes  # noqa: F401
+            import socket  # noqa: F401
+            import subprocess  # noqa: F401
+            import threading  # noqa: F401
+        gc.collect()
+        gc.freeze()  # the template's objects are never collected: a child's collections touch none of them
+        self.base = _vm_bytes()
+        self._self_test()
+
+    def _self_test(self) -> None:
+        """A child that tries to open a file must get EPERM from the filter (not EMFILE from the
+        rlimits, not a descriptor), or no program runs here."""
+        from .confine import Unconfinable
+        from .execution import Limits
+
+        def attempt() -> bytes:
+            try:
+                os.open("/proc/self/statm", os.O_RDONLY)
+            except OSError as exc:
+                return b"%d" % exc.errno
+            return b"opened"
+
+        how, status, answer = self.fork(attempt, Limits(wall_time=10.0))
+        if how == b"unconfined":
+            raise Unconfinable(f"the kernel refused the seccomp filter or the rlimits (status {status})")
+        if (how, status, answer) != (b"exit", 0, b"%d" % errno.EPERM):
+            raise Unconfinable(f"a confined process could open a file ({how.decode()} {status} {answer[:40]!r})")
+
+    def fork(self, work, limits) -> tuple[bytes, int, bytes]:
+        """Run work() (-> the answer's bytes) in a fresh confined child; how it ended, its status
+        and what it wrote after CONFINED."""
+        read, write = os.pipe()
+        try:
+            pid = os.fork()
+        except BaseException:
+            os.close(read)
+            os.close(write)
+            raise
+        if pid == 0:
+            self._child(work, limits, write)  # never returns
+        os.close(write)
+        try:
+            return self._collect(pid, read, time.monotonic() + limits.wall_time)
+        finally:
+            os.close(read)
+
+    def _child(self, work, limits, write: int) -> None:
+        status = FAILED
+        try:
+            for fd in (0, 1, 2):
+                os.dup2(self.null, fd)
+            os.dup2(write, 3)
+            os.closerange(4, MAX_FD)
+            self.filter.apply(limits, self.base)
+            os.write(3, CONFINED)
+            answer = work()
+            view = memoryview(answer)
+            while view:
+                view = view[os.write(3, view):]
+            status = 0
+        except MemoryError:
+            status = OUT_OF_MEMORY
+        except BaseException:
+            status = FAILED
+        finally:
+            os._exit(status)
+
+    def _collect(self, pid: int, read: int, deadline: float) -> tuple[bytes, int, bytes]:
+        chunks: list[bytes] = []
+        size = 0
+        try:
+            pidfd = os.pidfd_open(pid)
+        except (AttributeError, OSError):
+            pidfd = None
+        watch = [read] + ([pidfd] if pidfd is not None else [])
+        how = None
+        try:
+            while watch:
+                remaining = deadline - time.monotonic()
+                ready = select.select(watch, [], [], remaining)[0] if remaining > 0 else []
+                if not ready:
+                    how = b"timeout"
+                    break
+                if read in ready:
+                    chunk = os.read(read, 1 << 16)
+                    if not chunk:
+                        watch.remove(read)
+                    else:
+                        chunks.append(chunk)
+                        size += len(chunk)
+                        if size > ANSWER_BYTES + 1:
+                            how = b"overflow"
+                            break
+                if pidfd is not None and pidfd in ready:
+                    watch.remove(pidfd)
+                    if read in watch:  # the child ended: read what it left in the pipe
+                        while chunk := os.read(read, 1 << 16):
+                            chunks.append(chunk)
+                            size += len(chunk)
+                            if size > ANSWER_BYTES + 1:
+                                how = b"overflow"
+                                break
+                        watch.remove(read)
+                    if how:
+                        break
+            if how is not None:
+                try:
+                    os.kill(pid, signal.SIGKILL)
+                except ProcessLookupError:
+                    pass
+            _, status = os.waitpid(pid, 0)
+        finally:
+            if pidfd is not None:
+                os.close(pidfd)
+        data = b"".join(chunks)
+        if how is None:
+            if not data.startswith(CONFINED):
+                how, status = b"unconfined", os.waitstatus_to_exitcode(status)
+            elif os.WIFSIGNALED(status):
+                how, status = b"signal", os.WTERMSIG(status)
+            else:
+                how, status = b"exit", os.WEXITSTATUS(status)
+        elif how == b"timeout" and not data.startswith(CONFINED):
+            how = b"unconfined"
+        return how, status, data[len(CONFINED):] if data.startswith(CONFINED) else b""
+
+    def serve(self, inp, out) -> int:
+        from .execution import Limits
+
+        runtime = self.runtime
+        while True:
+            header = inp.readline()
+            if not header:
+                return 0
+            request = json.loads(header)
+            limits = Limits(*request["limits"])
+            rows, cols, semantics = request["rows"], request["cols"], request["semantics"]
+            breach = request.get("mode") == "breach"
+            items = [inp.readline() for _ in range(request["items"])]
+            for item in items:
+                source = json.loads(item)
+                if breach and not self.breach:
+                    how, status, answer = b"unconfined", 0, b""  # never runs: this template is not the tests'
+                elif breach:
+                    how, status, answer = self.fork(lambda: runtime.breached(source, rows, cols), limits)
+                else:
+                    how, status, answer = self.fork(
+                        lambda: runtime.answer(source, rows, cols, limits, semantics), limits)
+                out.write(b"%s %d %s\n" % (how, status, base64.b64encode(answer)))
+                out.flush()
 
 
-def _die_with_parent(parent: int) -> None:
-    """SIGKILL when the thread that started this worker (driver.py's spawner) ends."""
-    import ctypes
-    import signal
-
-    try:
-        ctypes.CDLL(None, use_errno=True).prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
-    except (OSError, AttributeError):  # not Linux: the stdin pipe still ends the worker
-        pass
-    if parent and os.getppid() != parent:  # the parent died before prctl
-        os._exit(0)
-
-
-def _resident_meter():
-    """A function giving this process's resident memory in bytes now: one pread() of
-    /proc/self/statm (a few microseconds). Not getrusage's peak: after exec that includes the
-    parent's peak, which may be far above anything this worker holds."""
-    page = os.sysconf("SC_PAGE_SIZE")
-    try:
-        fd = os.open("/proc/self/statm", os.O_RDONLY | os.O_CLOEXEC)
-    except OSError:  # not Linux: only runtime.SPOILED retires a worker
-        return lambda: 0
-    return lambda: int(os.pread(fd, 128, 0).split()[1]) * page
-
-
-def main(parent: int = 0) -> int:
-    from . import runtime
-    from .lines import encode, finish, parse_line
-    from .execution import Limits
-    from .runtime import compile_program, run
+def main(parent: int = 0, breach: bool = False) -> int:
+    """The template's life: the first line of stdin is the seccomp filter (BPF, base64), then
+    chunks of programs (see the module docstring)."""
+    from .confine import Unconfinable
 
     _die_with_parent(parent)
-
-    for kind in (resource.RLIMIT_CORE, resource.RLIMIT_FSIZE, resource.RLIMIT_NPROC):
-        _limit(kind, 0)
-    gc.freeze()  # startup objects are never collected: cheaper collections later
-    base = _vm_bytes()
-    resident = _resident_meter()
-    retire_at = resident() + RETIRE_BYTES
-    memory = None
     inp, out = sys.stdin.buffer, sys.stdout.buffer
+    try:
+        template = Template(base64.b64decode(inp.readline()), breach)
+    except Unconfinable as exc:
+        out.write(b"unconfined: " + str(exc).encode("ascii", "backslashreplace") + b"\n")
+        out.flush()
+        return 0
     out.write(b'"ready"\n')
     out.flush()
-    while True:
-        header = inp.readline()
-        if not header:
-            return 0
-        request = json.loads(header)
-        limits = Limits(*request["limits"])
-        if limits.memory != memory:
-            memory = limits.memory
-            _limit(resource.RLIMIT_AS, base + memory)
-        rows, cols, cache, mode = request["rows"], request["cols"], request["cache"], request["mode"]
-        semantics = request["semantics"]
-
-        def prepare(item: bytes) -> tuple:
-            """(the item's input, its compile_program result or None): everything before running."""
-            if mode == "code":
-                source = json.loads(item)
-                return source, compile_program(source, limits, cache)
-            number, _, raw = item.partition(b" ")
-            number = int(number)
-            parsed = parse_line(number, raw, check_target=False)
-            return (number, parsed), None if parsed[1] is None else compile_program(parsed[1], limits, cache)
-
-        def answer(job: tuple) -> str:
-            given, compiled = job
-            if mode == "code":
-                return encode(run(compiled, rows, cols, limits, semantics, given))
-            return finish(*given, lambda: run(compiled, rows, cols, limits)[:4])
-
-        # read the whole batch before answering: its programs are compiled ahead, and the parent
-        # may still be writing the next one
-        items = [inp.readline().rstrip(b"\n") for _ in range(request["items"])]
-        jobs: list = []
-        try:
-            if request["ahead"] and len(items) > 1:
-                # compile ahead while the parser and compiler are warm in the CPU caches (about 5 %
-                # less work than alternating with running), for at most AHEAD_SHARE of a wall time
-                stop = time.monotonic() + AHEAD_SHARE * limits.wall_time
-                for item in items:
-                    jobs.append(prepare(item))
-                    if time.monotonic() > stop:
-                        break
-            for k, item in enumerate(items):
-                if k < len(jobs):
-                    job, jobs[k] = jobs[k], None
-                else:
-                    job = prepare(item)
-                text = answer(job).encode("ascii")
-                if runtime.SPOILED or resident() > retire_at:
-                    out.write(RETIRED + text + b"\n")
-                    out.flush()
-                    os._exit(0)
-                out.write(text + b"\n")
-                out.flush()
-        except MemoryError:  # outside the program's own run: give up, the parent reports it
-            os._exit(OUT_OF_MEMORY)
-    return 0
+    return template.serve(inp, out)
 
 
-if __name__ == "__main__":
-    sys.exit(main(int(sys.argv[1]) if len(sys.argv) > 1 else 0))

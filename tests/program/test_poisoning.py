@@ -1,5 +1,5 @@
 """No program spoils another: after each memory, cycle, crash and cache attack, 50 gold programs
-in the same process (the same pool of workers) all build their gold boards exactly, through
+in the same process (the same templates, each program in a child of its own) all build their gold boards exactly, through
 `execute()`, `execute_many()` and `sartco execute` fed line by line.
 
 The attacks:
@@ -12,7 +12,6 @@ The attacks:
 - swallowed: a MemoryError caught by `finally: return`, the cycle still alive.
 """
 import json
-import os
 import select
 import signal
 import subprocess
@@ -59,12 +58,12 @@ def _exact(results, gold) -> int:
 def test_execute_after_attack(attack, gold):
     shutdown()
     program, verdicts = ATTACKS[attack]
-    for _ in range(2):  # the attack twice: the second finds a worker that replaced the first
+    for _ in range(2):  # the attack twice: each in a process of its own, forked from the same template
         execute("x = 1")
-        before = pool._workers[0].proc.pid
+        before = pool.local().pids()
         ex = execute(program)
         assert ex.error in verdicts, ex.message
-        assert pool._workers[0].proc is None or pool._workers[0].proc.pid != before, "the worker was replaced"
+        assert pool.local().pids() == before, "the template ran no program: nothing of the attack reached it"
         assert ex.message.isprintable()
         results = [execute(p.code) for p in gold]
         assert _exact(results, gold) == N_GOLD, [r.message for r in results if not r.ok][:3]
@@ -118,26 +117,29 @@ def test_sartco_execute_line_by_line_after_attacks(gold):
 
 @pytest.mark.parametrize("how", [signal.SIGKILL, signal.SIGTERM])
 def test_workers_die_with_their_parent(how):
-    """A parent killed (SIGKILL, SIGTERM) while its worker runs a long C loop takes the worker
-    with it."""
+    """A parent killed (SIGKILL, SIGTERM) while a program runs a long C loop takes the template
+    and the program's process with it."""
     script = (
         "import sys, threading\n"
         "from sartco.program import execute, pool\n"
         "execute('x = 1')\n"
-        "print(pool._workers[0].proc.pid, flush=True)\n"
+        "print(pool.local().pids()[0], flush=True)\n"
         "execute('x = sum(sum(range(10**6)) for i in range(10**6))', limits=__import__('sartco.program', "
         "fromlist=['Limits']).Limits(wall_time=600.0))\n"
     )
     proc = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE)
-    worker = int(_readline(proc))
-    time.sleep(0.5)  # the worker is inside the C loop now
+    template = int(_readline(proc))
+    time.sleep(0.5)  # the program's process is inside the C loop now
+    with open(f"/proc/{template}/task/{template}/children") as f:
+        children = [int(pid) for pid in f.read().split()]
+    assert len(children) == 1, children
     proc.send_signal(how)
     proc.wait()
     for _ in range(100):
-        if not _alive(worker):
+        if not any(map(_alive, [template, *children])):
             break
         time.sleep(0.1)
-    assert not _alive(worker)
+    assert not any(map(_alive, [template, *children]))
 
 
 def _alive(pid: int) -> bool:
@@ -160,4 +162,3 @@ def test_worker_started_from_a_finished_thread_survives():
     time.sleep(0.2)
     ex = execute("put(board, 'nut', 'red', 0, 0)")
     assert ex.ok and ex.cells == {"0:0": [["nut", "red"]]}, ex.message
-    assert os.getpid()  # same process, same workers

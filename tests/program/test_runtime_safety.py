@@ -7,10 +7,10 @@ import time
 
 import pytest
 
-from sartco.program import Limits, driver, execute, runtime
+from sartco.program import Limits, execute, runtime, verdict
 from sartco.program.instrument import prepare
 from sartco.program.execution import clean
-from sartco.world import Board, ErrorCode
+from sartco.world import ErrorCode
 
 E = ErrorCode
 L = Limits()
@@ -54,10 +54,10 @@ def test_internal_compile_error_is_not_cached(monkeypatch):
 
 @pytest.mark.parametrize("failure,code", [(MemoryError, E.RESOURCE_LIMIT), (RuntimeError, E.HARNESS_ERROR)])
 def test_failure_while_reading_the_board_is_never_ok(monkeypatch, failure, code):
-    def cells(self):
+    def checked(board):
         raise failure
 
-    monkeypatch.setattr(Board, "cells", cells)
+    monkeypatch.setattr(runtime, "checked", checked)
     ok, error, message, got, puts = runtime.run(runtime.compile_program("put(board, 'nut', 'red', 0, 0)", L), 8, 8, L)
     assert (ok, error, got) == (False, code, {})
     assert message and runtime.SPOILED
@@ -100,11 +100,11 @@ def test_clean():
 @pytest.mark.parametrize("status,code,word", [
     (-11, E.RUNTIME_ERROR, "SIGSEGV"), (-6, E.RUNTIME_ERROR, "SIGABRT"), (-9, E.RESOURCE_LIMIT, "SIGKILL"),
     (3, E.RESOURCE_LIMIT, "memory"),
-    # the worker's own exit, not a kill while the program ran: the harness's fault (issue 21)
-    (1, E.HARNESS_ERROR, "status 1"), (0, E.HARNESS_ERROR, "status 0"),
+    # a program's process is the program's: however it ends, never the harness's fault (issue 32)
+    (1, E.RUNTIME_ERROR, "status 1"), (0, E.RUNTIME_ERROR, "status 0"),
 ])
-def test_a_dead_worker_is_named(status, code, word):
-    ex = driver._died(status)
+def test_a_dead_child_is_named(status, code, word):
+    ex = verdict.died(status)
     assert (ex.ok, ex.error) == (False, code) and word in ex.message
 
 
