@@ -32,6 +32,7 @@ children never outlive it (the same, set in each child).
 from __future__ import annotations
 
 import base64
+import ctypes
 import errno
 import gc
 import json
@@ -54,8 +55,6 @@ PRELOAD = ("unicodedata",)
 
 def _die_with_parent(parent: int) -> None:
     """SIGKILL when the thread that started this process (driver.py's spawner) ends."""
-    import ctypes
-
     try:
         ctypes.CDLL(None, use_errno=True).prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
     except (OSError, AttributeError):  # not Linux: the stdin pipe still ends the template
@@ -82,10 +81,16 @@ class Template:
         self.breach = breach
         self.null = os.open(os.devnull, os.O_RDWR)
         if breach:  # the assume-breach tests attack the kernel's walls with these already imported
-            import ctypes  # noqa: F401
             import socket  # noqa: F401
             import subprocess  # noqa: F401
             import threading  # noqa: F401
+        # libc's fork(), called with the GIL held (PyDLL), not os.fork(): Python's at-fork work
+        # (threading's and random's hooks, the interpreter's re-initialisation for other threads)
+        # doubled the cost of a fork here, and a template has one thread only (checked here), so
+        # the child's interpreter is consistent as it is
+        if len(sys._current_frames()) != 1:
+            raise RuntimeError("the sandbox template must have one thread")
+        self._fork = ctypes.PyDLL(None, use_errno=True).fork
         gc.collect()
         gc.freeze()  # the template's objects are never collected: a child's collections touch none of them
         self.base = _vm_bytes()
@@ -114,12 +119,11 @@ class Template:
         """Run work() (-> the answer's bytes) in a fresh confined child; how it ended, its status
         and what it wrote after CONFINED."""
         read, write = os.pipe()
-        try:
-            pid = os.fork()
-        except BaseException:
+        pid = self._fork()
+        if pid < 0:
             os.close(read)
             os.close(write)
-            raise
+            raise OSError(ctypes.get_errno(), "fork")
         if pid == 0:
             self._child(work, limits, write)  # never returns
         os.close(write)
