@@ -40,14 +40,22 @@ Budget stops: `timeout` (steps, wall time) and `resource_limit` (depth, length, 
 memory, source size); no handler catches them (nor a refusal), and they stay the verdict when a
 program swallows them (an except handler re-raises them; a `finally` body's first statement
 remembers a RecursionError or MemoryError passing through). A program that crashes its worker
-gets `runtime_error` "crashed (SIGSEGV)". What the program did not cause (no worker could start,
-a garbled or missing answer, a worker's own exit, an internal error) is `harness_error`.
+gets `runtime_error` "crashed its process (SIGSEGV)".
 
-No program spoils another: a worker retires after a budget stop, a MemoryError, an internal
-error, or a program after which it holds 64 MB more than at its start, and the next program
-runs in a fresh one; verdicts are cached only when they depend on the source alone; messages escape control characters,
-lone surrogates and bidi overrides (sartco.text) before anything writes them; workers die with their parent process.
-
+The walls (issue 32): the checks above refuse early and explain, but no score and no host
+resource depends on them. Every program runs in a fresh process forked from a template that has
+imported what programs need and has run no program (worker.py); before the program's first line
+that child keeps only /dev/null and its answer pipe, takes rlimits (address space, CPU, file
+size, open files, processes) and a seccomp allow-list (confine.py: no file opened or created, no
+socket, exec, new process or thread, signal to another process, ptrace, ...), and it exits after
+the one program. It sends back only a put log of plain values and its outcome; the parent
+replays the log with the world's own `put` on its own board (verdict.py), so only `put` changes a
+board whatever happened in the child. However a child ends (a crash, an exit, garbage, too much,
+nothing) it is the program's `runtime_error`, `resource_limit` or `timeout`; `harness_error` is
+the parent's and the template's own failure alone (no template could start, the kernel cannot
+confine programs here: then nothing runs, never unconfined). Messages escape control characters,
+lone surrogates and bidi overrides (sartco.text) before anything writes them; templates and
+children die with their parent process.
 
 Modules (each one's docstring has the details):
   allowed.py      the allowed subset as data: builtins, attribute names, node types and fields
@@ -65,9 +73,12 @@ Modules (each one's docstring has the details):
   runtime.py      run one prepared program in its namespace() (a `__main__` module), map outcomes
   namespaces.py   the paper protocol's namespace (the authors' exec: separate globals and locals)
   json_module.py  the json stand-in (plain data, output counted against the length budget)
-  worker.py       the worker process loop (JSON lines over pipes, rlimits)
-  driver.py       the parent's side of one worker: chunks, answers, hard kill on wall time
-  pool.py         persistent workers, batching, restarts; execute(), execute_many()
+  confine.py      the kernel's walls: the seccomp filter (compiled by libseccomp) and rlimits
+  worker.py       the template process: one confined child per program, its end and answer
+  verdict.py      the parent decides: a child's end and put log -> Execution, the board replayed
+  driver.py       the parent's side of one template: chunks, answers, the template's failures
+  pool.py         LocalSandbox: templates, batching, restarts
+  sandbox.py      the Sandbox interface (execute, execute_many, close), current(), use()
   execution.py    Limits, Execution; clean() for every message written
   compare.py      Comparison: ES, mismatch category, cell precision/recall/F1; judge()
   lines.py        one line of the `sartco execute` contract (parsed and answered inside the workers)
@@ -80,7 +91,10 @@ bound without an import, `__name__` not "__main__", the board passed in is the o
 (namespaces.py; json_module.py is the json stand-in).
 
 `execute_many(programs, rows, cols, limits, workers=None)` runs a batch (split over up to two
-worker processes); `shutdown()` kills the workers (they restart on the next call).
+template processes) in the sandbox in use (`current()`; `use(sandbox)` puts another Sandbox in
+use: the games, the paper protocol, the probes, `sartco execute` and bench-execute all run
+programs through these two functions); `shutdown()` kills the local templates (they restart on
+the next call).
 """
 from .compare import Comparison, compare, judge
 from .execution import MODULE, PAPER, Execution, Limits

@@ -1,7 +1,7 @@
 """One line of the `sartco execute` contract: parse an input line, build its output object.
 
-Used inside the workers (each input line is parsed, run, compared and answered there, so the
-parent only routes bytes) and by the parent for lines whose worker timed out or died.
+Used by serve.py in the parent: each input line is parsed here, its program run in the sandbox
+(a confined process of its own), and the answer compared and formatted here.
 
 in:  {"id": str, "code": str, "target": optional cells}
 out: {"id", "ok", "error": null | code, "message", "cells"} and, when a target was given,

@@ -1,4 +1,5 @@
-"""Run one prepared program on a fresh board, inside the worker process.
+"""Run one prepared program on a fresh board, inside the program's own confined process (a child
+of the template, worker.py), and make the answer it sends (`answer`: a put log and an outcome).
 
 The program's globals (namespace()) are `__name__`, `board`, `put`, `init_board`; under PAPER
 semantics namespaces.paper splits them into the authors' globals and locals. Its `__builtins__` is BUILTINS (no
@@ -8,7 +9,7 @@ builtins (some with budgets: `range`, `round`, `sum`, `pow` in budget.py, `int`,
 stand-in for every other builtin name (calling it is `forbidden`), `__import__` for the
 stand-in modules (modules.py), `__build_class__` for class statements (records.py), and the `$` helpers that nodes.py inserts. The result board is
 the global `board` if it is a Board, else the most recently created board. Every outcome is
-turned into `[ok, code, message, cells, puts]`, the message cleaned (execution.clean).
+turned into (ok, code, message, the board put built), the message cleaned (execution.clean).
 
 Python exceptions map to codes: NameError -> name_error, TypeError -> type_error, ValueError ->
 value_error, KeyError -> key_error, IndexError -> index_error, ZeroDivisionError ->
@@ -17,9 +18,10 @@ resource_limit, a spent step budget -> timeout, WorldError -> its own code, Forb
 attribute on a type outside TYPE_METHODS, a refused builtin or format field) -> forbidden,
 anything else (AssertionError, RuntimeError, AttributeError, ...) -> runtime_error. A budget
 stop or refusal is the verdict even when the program swallowed it (budget.STOPPED, a spent step
-counter; a RecursionError or MemoryError seen by a finally body, `$final`). After a budget stop,
-a MemoryError or an internal error, SPOILED tells the worker to retire; no internal error ever
-ends as `ok` (it is `harness_error`), and only verdicts that depend on the source alone are cached.
+counter; a RecursionError or MemoryError seen by a finally body, `$final`). No internal error
+ever ends as `ok` (it is `harness_error` here, and the parent makes it the program's
+`runtime_error`: the process is the program's, verdict.py). The process runs one program and
+exits (worker.py): nothing here needs resetting for a next one.
 """
 from __future__ import annotations
 
@@ -45,15 +47,11 @@ from .result import checked
 
 E = ErrorCode
 MESSAGE_CHARS = 400
-CACHE_SIZE = 4096
-SPOILED = False  # set when this worker must not run another program (the worker then exits)
 _STEPS = repeat(True, 0)  # the current program's step counter
 
 
 def _caught(exc):
     """The first statement of every except handler: budget stops and refusals go on."""
-    if isinstance(exc, MemoryError):
-        _spoil()
     if isinstance(exc, (Limit, Forbidden, MemoryError, RecursionError)) or length_hint(_STEPS) == 0:
         raise exc
 
@@ -101,55 +99,36 @@ BUILTINS = {
     "$fstr": formatting.fstring_field,
 }
 
-# --- compile (cached by exact source text: the verdict and code object depend on nothing else) --
+# --- compile ------------------------------------------------------------------------------------
 
-_cache: dict[str, tuple] = {}
-
-
-def compile_program(source: str, limits, cache: bool = True) -> tuple:
+def compile_program(source: str, limits) -> tuple:
     """(code object, None, "") or (None, error code, message): the source's type and size
     checked, then parsed, checked, instrumented and compiled (see instrument.py)."""
     if type(source) is not str:
         return (None, E.TYPE_ERROR, not_a_str(source))
     if len(source) > limits.source:
         return (None, E.RESOURCE_LIMIT, f"the program has {len(source)} characters; the limit is {limits.source}")
-    hit = _cache.get(source) if cache else None
-    if hit is not None:
-        return hit
     collecting = gc.isenabled()
-    keep = cache  # only verdicts that depend on the source alone are cached
     try:
         # parsing allocates thousands of syntax-tree nodes that form no cycles (they are freed by
         # reference counting): the cyclic collector would only traverse them in vain
         gc.disable()
-        result = (prepare(source), None, "")
+        return (prepare(source), None, "")
     except Forbidden as exc:
-        result = (None, E.FORBIDDEN, clean(str(exc)))
+        return (None, E.FORBIDDEN, clean(str(exc)))
     except SyntaxError as exc:
-        result = (None, E.SYNTAX_ERROR, clean(f"line {exc.lineno}: {exc.msg}" if exc.lineno else str(exc.msg)))
+        return (None, E.SYNTAX_ERROR, clean(f"line {exc.lineno}: {exc.msg}" if exc.lineno else str(exc.msg)))
     except (ValueError, UnicodeError) as exc:  # e.g. null bytes, lone surrogates
-        result = (None, E.SYNTAX_ERROR, clean(str(exc)))
+        return (None, E.SYNTAX_ERROR, clean(str(exc)))
     except RecursionError:
-        result = (None, E.RESOURCE_LIMIT, "the program is too deeply nested to compile")
-    except MemoryError:  # the worker's memory, not the source: not cached, and the worker retires
-        result, keep = (None, E.RESOURCE_LIMIT, "the sandbox ran out of memory while compiling the program"), False
-        _spoil()
-    except Exception as exc:  # a compiler failure must not end the worker
-        result, keep = (None, E.HARNESS_ERROR, clean(f"internal error while compiling: {type(exc).__name__}: {exc}")), False
-        _spoil()
+        return (None, E.RESOURCE_LIMIT, "the program is too deeply nested to compile")
+    except MemoryError:
+        return (None, E.RESOURCE_LIMIT, "the program's process ran out of memory while compiling it")
+    except Exception as exc:  # a compiler failure must not end the process without an answer
+        return (None, E.HARNESS_ERROR, clean(f"internal error while compiling: {type(exc).__name__}: {exc}"))
     finally:
         if collecting:
             gc.enable()
-    if keep:
-        if len(_cache) >= CACHE_SIZE:
-            _cache.clear()
-        _cache[source] = result
-    return result
-
-
-def _spoil():
-    global SPOILED
-    SPOILED = True
 
 
 # --- run ----------------------------------------------------------------------------------------
@@ -223,7 +202,7 @@ def answer(source, rows: int, cols: int, limits, semantics: str = MODULE) -> byt
     [ok, code or None, message, rows, cols, log], `log` the puts of the result board as one flat
     list shape, colour, x, y, shape, ... of plain str and int. The parent replays the log and
     decides the board (verdict.py): nothing else of the child's board leaves it."""
-    ok, error, message, board = _run(compile_program(source, limits, cache=False), rows, cols, limits, semantics,
+    ok, error, message, board = _run(compile_program(source, limits), rows, cols, limits, semantics,
                                      source if type(source) is str else "")
     return _encode(ok, error, message, board)
 
@@ -315,15 +294,10 @@ def _run(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE,
         error, message, fresh = E.RESOURCE_LIMIT, "the sandbox ran out of memory while reading the board", None
     except Exception as exc:  # never `ok` after an internal error
         error, message, fresh = E.HARNESS_ERROR, clean(f"internal error: {type(exc).__name__}"), None
-        _spoil()
-    if error in (E.TIMEOUT, E.RESOURCE_LIMIT):
-        _spoil()
     return error is None, error, message, fresh
 
 
 def _verdict(exc: BaseException | None, limits) -> tuple:
     if length_hint(_STEPS) == 0:
         return E.TIMEOUT, f"the program used up its budget of {limits.steps} steps (loop iterations and calls)"
-    if isinstance(exc, MemoryError):
-        _spoil()
     return _classify(exc), _describe(exc)

@@ -259,18 +259,16 @@ def test_the_worker_runs_the_check(monkeypatch, forge):
         put(board, *args)
         forge(board)
 
-    monkeypatch.setattr(runtime, "SPOILED", False)
     monkeypatch.setattr(runtime, "put", leaky_put)
-    compiled = runtime.compile_program("put(board, 'washer', 'red', 1, 1)", L, cache=False)
+    compiled = runtime.compile_program("put(board, 'washer', 'red', 1, 1)", L)
     ok, error, message, cells, puts = runtime.run(compiled, 8, 8, L)
     assert (ok, error, message, cells, puts) == (False, E.FORBIDDEN, FORGED, {"1:1": WR}, 1)
 
 
 def test_typing_caches_keep_nothing_of_an_earlier_program(monkeypatch):
-    monkeypatch.setattr(runtime, "SPOILED", False)
     runtime.run(runtime.compile_program("from typing import Literal, List\nt = Literal[board]\nu = List[str]", L,
-                                        cache=False), 8, 8, L)
-    runtime.run(runtime.compile_program("x = 1", L, cache=False), 8, 8, L)
+                                        ), 8, 8, L)
+    runtime.run(runtime.compile_program("x = 1", L, ), 8, 8, L)
     assert all(clear.__self__.cache_info().currsize == 0 for clear in typing._cleanups)
 
 
