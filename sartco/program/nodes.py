@@ -35,7 +35,6 @@ CHECKED_OPS = {ast.Add: "$add", ast.Mult: "$mul", ast.Pow: "$pow", ast.LShift: "
 INPLACE_OPS = {ast.Add: "$iadd", ast.Mult: "$imul", ast.Pow: "$ipow", ast.LShift: "$ilshift", ast.Mod: "$imod"}
 
 
-
 def fail(node, text: str):
     line = getattr(node, "lineno", None)
     exc = Forbidden(f"line {line}: {text}" if line else text)
@@ -60,8 +59,7 @@ class Walk:
 def check_name(node, name: str, store: bool, walk: Walk):
     if name[0] == "$":  # ours: no Python source can spell it
         return
-    if name[0] == "_" and name[:2] == "__" and (store or name != "__name__") and not (
-            name in DEFINABLE and (not store or id(node) in walk.methods)):
+    if name[:2] == "__" and (id(node) not in walk.methods if store else name not in DEFINABLE and name != "__name__"):
         fail(node, f"names starting with two underscores reach the interpreter: {name}")
     if store:
         if name in PROVIDED:
@@ -111,8 +109,7 @@ def _r_function(n, walk):
 
 def _r_class(n, walk):
     """A class statement (classes.py builds it): no keywords, `object` as a base is implied,
-    and its methods may define the DEFINABLE dunders, as may plain assignments in its body
-    (`__rmul__ = __mul__`; a DEFINABLE name may be read anywhere: only a class body binds one)."""
+    and its defs and assignments (`__rmul__ = __mul__`) may bind DEFINABLE dunders (read anywhere)."""
     check_name(n, n.name, True, walk)
     if n.keywords:
         fail(n, f"class {n.name}: class keywords (metaclass=...) are not allowed (a metaclass reaches the interpreter)")
@@ -293,9 +290,8 @@ def _is_list_field(t: type, field: str) -> bool:
     if t in (A.Lambda, A.IfExp):
         return False
     return field in {
-        "body", "targets", "orelse", "values", "elts", "keys", "generators", "comparators",
-        "keywords", "ifs", "posonlyargs", "kwonlyargs", "kw_defaults", "defaults", "handlers", "finalbody",
-        "decorator_list", "bases", "items",
+        "body", "targets", "orelse", "values", "elts", "keys", "generators", "comparators", "keywords", "ifs",
+        "posonlyargs", "kwonlyargs", "kw_defaults", "defaults", "handlers", "finalbody", "decorator_list", "bases", "items",
     } or (field == "args" and t in (A.Call, A.arguments))
 
 
