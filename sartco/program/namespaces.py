@@ -18,10 +18,12 @@ verdicts. As the authors' module was, it is importable (sys.modules holds a modu
 name, SCORER): dataclasses looks a class's module up there to read string annotations
 (`from __future__ import annotations`, `x: "int"`) and to make the methods it writes. It is an
 empty module (dataclasses only asks it whether a name is typing's ClassVar or its own InitVar
-or KW_ONLY, which no name of the authors' globals was), so those methods see Python's builtins as
-under the authors' exec, and no program can reach it (no import of it is allowed). `re` stays refused (a pattern can backtrack in C code beyond every budget): its
-functions are there and each refuses, naming why. The simulator's error classes are not bound
-(their names are not in the README).
+or KW_ONLY, which no name of the authors' globals was), so those methods see Python's builtins
+as under the authors' exec; no program can reach it (no import of it is allowed).
+
+`re` stays refused (a pattern can backtrack in C code beyond every budget): its functions are
+there and each refuses, naming why. The simulator's error classes are not bound (their names
+are not in the README).
 """
 from __future__ import annotations
 

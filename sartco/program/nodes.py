@@ -59,7 +59,7 @@ class Walk:
 def check_name(node, name: str, store: bool, walk: Walk):
     if name[0] == "$":  # ours: no Python source can spell it
         return
-    if name[:2] == "__" and (id(node) not in walk.methods if store else name not in DEFINABLE and name != "__name__"):
+    if name[0] == "_" and name[:2] == "__" and (id(node) not in walk.methods if store else name not in DEFINABLE and name != "__name__"):
         fail(node, f"names starting with two underscores reach the interpreter: {name}")
     if store:
         if name in PROVIDED:
