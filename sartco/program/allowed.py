@@ -1,8 +1,10 @@
 """The subset of Python a program may use, as data: the builtins, the attribute names, the
 syntax node types (with the fields that hold their children) and why the others are refused.
 
-Allowed: every statement and expression of Python except with, async/await, match and
-try/except* (see WHAT for why); class statements as classes.py builds them; imports of the
+Allowed: every statement and expression of Python except async/await, match and try/except*
+(see WHAT for why); `with` too, whose context managers can only be the stand-ins that offer
+them (contextlib's suppress and nullcontext: a program's class cannot define `__enter__`), none
+of which swallows a budget stop; class statements as classes.py builds them; imports of the
 stand-in modules of modules.py only; any name except those starting with two underscores (but
 `__name__` may be read: `if __name__ == "__main__":`), `put`/`init_board` never rebound, and a
 builtin outside ALLOWED_BUILTINS only if the program binds that name itself (`type = 'nut'`);
@@ -19,7 +21,8 @@ from .classes import EXCEPTIONS
 ALLOWED_BUILTINS = frozenset(
     "range zip enumerate len min max abs sum sorted reversed any all round divmod "
     "int str bool list tuple dict set frozenset float print isinstance issubclass map filter next iter "
-    "chr ord pow format repr ascii hex bin oct callable hash slice super property staticmethod classmethod".split()
+    "chr ord pow format repr ascii hex bin oct callable hash slice super property staticmethod classmethod "
+    "NotImplemented Ellipsis".split()
 ) | EXCEPTIONS
 PROVIDED = frozenset({"put", "init_board"})  # `board` is provided too, but may be rebound
 DENIED = frozenset(dir(builtins)) - ALLOWED_BUILTINS - {"True", "False", "None", "Ellipsis", "NotImplemented", "__name__"}
@@ -35,6 +38,7 @@ FIELDS: dict[type, tuple[str, ...]] = {
     A.For: ("target", "iter", "body", "orelse"), A.While: ("test", "body", "orelse"),
     A.If: ("test", "body", "orelse"), A.Expr: ("value",), A.Pass: (), A.Break: (), A.Continue: (),
     A.Try: ("body", "handlers", "orelse", "finalbody"), A.ExceptHandler: ("type", "body"),
+    A.With: ("items", "body"), A.withitem: ("context_expr", "optional_vars"),
     A.Raise: ("exc", "cause"), A.Assert: ("test", "msg"), A.Global: (), A.Nonlocal: (),
     A.Import: (), A.ImportFrom: (),
     A.BoolOp: ("values",), A.NamedExpr: ("target", "value"), A.BinOp: ("left", "right"),
@@ -50,7 +54,7 @@ FIELDS: dict[type, tuple[str, ...]] = {
     A.arg: ("annotation",), A.keyword: ("value",),
 }
 WHAT = {
-    A.With: "with (context managers open files and locks)", A.AsyncWith: "async with", A.TryStar: "try/except*",
+    A.AsyncWith: "async with", A.TryStar: "try/except*",
     A.Await: "await",
     A.AsyncFunctionDef: "async def", A.AsyncFor: "async for",
     A.Match: "match (class patterns read attributes by name)",

@@ -16,20 +16,24 @@ When it runs (`$attr` = read, `$fields` = fields):
   (`f"{self.__class__.__name__}(...)"`); `super()` in a program's method reads like an object;
 - a built-in type used unbound: its allowed methods (`map(str.lower, words)`), `dict.fromkeys`,
   `itertools.chain.from_iterable`;
+- a function the program defined (its code is the program's): its name, and the attributes the
+  program gave it (`wrapper.calls = 0`);
 - any other object: the methods its type offers (methods.TYPE_METHODS and TYPES below);
-- writing and deleting: on objects of the program's own classes only, never a dunder.
+- writing and deleting: on objects of the program's own classes and on the functions it
+  defined only, never a dunder.
 So nothing reaches `__class__`, `__dict__`, `__globals__`, frames, code or another object's
 internals: those names are never offered and no type the program can reach offers them.
 """
 from __future__ import annotations
 
+import dataclasses
 import itertools
 import types
 
 from .arrays import ARRAY_NAMES, ndarray
 from .budget import Forbidden
 from .chance import RANDOM_METHODS, SeededRandom
-from .classes import DEFINABLE, EXCEPTION_TYPES, READABLE, ProgramClass
+from .classes import DEFINABLE, EXCEPTION_TYPES, FILENAME, READABLE, ProgramClass
 from .conversions import STR
 from .methods import CHECKED_METHODS, METHODS, TYPE_METHODS, _DICT, _FROZEN, _LIST, _SET, _STR
 from .modules import MEMBERS, Module
@@ -39,6 +43,9 @@ TYPES = {  # types of the stand-ins and of the class machinery, with the names t
     types.GeneratorType: frozenset({"send", "close"}),
     types.FunctionType: frozenset({"__name__", "__qualname__"}),  # a function's name (functools.wraps loggers)
     **dict.fromkeys(EXCEPTION_TYPES, frozenset({"args"})),  # what a handler may read of a caught error
+    StopIteration: frozenset({"args", "value"}),  # a generator's return value
+    dataclasses.Field: frozenset({"name", "type", "default", "default_factory", "init", "repr", "hash", "compare",
+                                  "metadata", "kw_only"}),  # what dataclasses.fields() gives, its public part
 }
 UNBOUND = {  # built-in types and stand-in members a program may read a method of
     STR: (str, _STR), list: (list, _LIST), dict: (dict, _DICT | {"fromkeys"}), set: (set, _SET),
@@ -60,6 +67,11 @@ def _defined(obj, name: str) -> bool:
             return True
         mro = type(obj).__mro__
     return any(name in klass.__dict__ for klass in mro[:-1])  # mro[-1] is object
+
+
+def _own_function(obj) -> bool:
+    """A function the program defined (def or lambda): its code was compiled from the program."""
+    return type(obj) is types.FunctionType and obj.__code__.co_filename == FILENAME
 
 
 def _unbound(real: type, name: str):
@@ -113,6 +125,8 @@ def read(obj, name: str):
         raise Forbidden(f".{name} is allowed only on str, list, dict, set, tuple, the allowed modules and the "
                         f"program's own classes, not on {t.__name__}")
     if name not in allowed:
+        if name[:2] != "__" and _own_function(obj) and name in obj.__dict__:
+            return obj.__dict__[name]
         _missing(t, name)
     return getattr(obj, name)
 
@@ -144,7 +158,7 @@ class _Fields:
 def fields(obj, name: str) -> _Fields:
     """`$fields`: the store target of the program's object `obj` for attribute `name`."""
     t = type(obj)
-    if name[:2] == "__" or not (type(t) is ProgramClass or t is ProgramClass):
+    if name[:2] == "__" or not (type(t) is ProgramClass or t is ProgramClass or _own_function(obj)):
         raise Forbidden(f"assigning to an attribute (.{name}) is allowed only on objects of the program's own "
-                        f"classes, not on {t.__name__}")
+                        f"classes and on its own functions, not on {t.__name__}")
     return _Fields(obj)

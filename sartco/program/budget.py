@@ -46,6 +46,11 @@ class Forbidden(_Stop):
     position = (0, 0)
 
 
+# what no handler, finally body or context manager of a program may swallow: a budget stop, a
+# refusal, and the interpreter's own stops (runtime's $caught and $final, modules.suppress)
+STOPS = (Limit, Forbidden, MemoryError, RecursionError)
+
+
 def too_long(n):
     raise Limit(f"a sequence of {n} items is longer than the limit of {LENGTH}")
 

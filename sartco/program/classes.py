@@ -39,6 +39,7 @@ EXCEPTION_TYPES = frozenset(getattr(builtins, name) for name in EXCEPTIONS)  # t
 # dunder attributes a program may read on its own objects (attributes.py): an instance's class
 # (never a class's class: the metaclass is never reachable) and a class's name
 READABLE = frozenset({"__class__", "__name__", "__qualname__"})
+FILENAME = "<program>"  # the file name a program's code is compiled under (instrument.prepare)
 COMPILER_NAMES = frozenset({"__module__", "__qualname__", "__annotations__", "__classcell__", "__doc__"})
 
 

@@ -15,6 +15,7 @@ import re
 
 from .allowed import ALLOWED_BUILTINS, EXCEPTIONS, WHAT
 from .budget import Forbidden
+from .classes import FILENAME
 from .modules import MEMBERS
 from .nodes import PLAN, WRAPS, Walk, check_name, fail
 
@@ -111,5 +112,5 @@ def _undefined_attributes(walk: Walk, offences: list):
 
 def prepare(source: str):
     """Parse, check and instrument; return a code object. Raises SyntaxError or Forbidden."""
-    tree = compile(source, "<program>", "exec", ast.PyCF_ONLY_AST, dont_inherit=True)
-    return compile(instrument(tree), "<program>", "exec", dont_inherit=True)
+    tree = compile(source, FILENAME, "exec", ast.PyCF_ONLY_AST, dont_inherit=True)
+    return compile(instrument(tree), FILENAME, "exec", dont_inherit=True)

@@ -17,12 +17,15 @@ caches, shared by a worker's programs, are emptied before each program (forget_t
 Stand-ins of their own: numpy (arrays.py, numpy_members.py: arrays with numpy's semantics for
 the subset models use), random (chance.py: CPython's sequence, one generator per program,
 seeded with 0 unless the program seeds it), dataclasses and namedtuple/NamedTuple (records.py:
-classes of the program), `functools.wraps(f)` (without `assigned`/`updated`), `functools.total_ordering`, and
+classes of the program), `functools.wraps(f)` (without `assigned`/`updated`), `functools.total_ordering`,
+contextlib's `suppress` (which never swallows a budget stop, a refusal, a RecursionError or a
+MemoryError: budget.STOPS) and `nullcontext`, the only context managers a `with` can use, and
 `from __future__ import annotations`.
 """
 from __future__ import annotations
 
 import collections
+import contextlib
 import copy
 import functools
 import itertools
@@ -32,7 +35,7 @@ import string
 import typing
 
 from . import budget, chance, formatting, named, numpy_members, records
-from .budget import Forbidden, too_big
+from .budget import STOPS, Forbidden, too_big
 from .conversions import INT
 from .json_module import MEMBERS as JSON_MEMBERS
 
@@ -120,6 +123,22 @@ def deep_copy(x, *more, **named):
     return copy.deepcopy(x)
 
 
+class suppress:  # contextlib's name
+    """contextlib.suppress(*exceptions): a `with` block that ends quietly on one of them, except
+    on what a program may never swallow (budget.STOPS)."""
+
+    __slots__ = ("_exceptions",)
+
+    def __init__(self, *exceptions):
+        self._exceptions = exceptions
+
+    def __enter__(self):
+        return None
+
+    def __exit__(self, kind, value, traceback):
+        return kind is not None and not isinstance(value, STOPS) and issubclass(kind, self._exceptions)
+
+
 shallow_copy.__name__ = shallow_copy.__qualname__ = "copy"
 deep_copy.__name__ = deep_copy.__qualname__ = "deepcopy"
 
@@ -154,6 +173,7 @@ _FACTORIES = {
     "collections": lambda: {"namedtuple": records.namedtuple, "defaultdict": collections.defaultdict, "Counter": collections.Counter,
                             "deque": collections.deque, "OrderedDict": collections.OrderedDict},
     "copy": lambda: {"copy": shallow_copy, "deepcopy": deep_copy},
+    "contextlib": lambda: {"suppress": suppress, "nullcontext": contextlib.nullcontext},
     "operator": lambda: {**{n: getattr(operator, n) for n in _OPERATOR}, "add": budget.add, "mul": budget.mul,
                          "pow": budget.power, "mod": formatting.mod, "lshift": budget.lshift,
                          "attrgetter": named.attrgetter, "methodcaller": named.methodcaller},

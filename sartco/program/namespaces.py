@@ -14,13 +14,22 @@ names up in the globals only (`board`, its own helpers and top-level variables a
 there, `put`, `np`, ... are not). `global x` writes the globals, as in the authors' scorer.
 
 The scorer module's real name is not in the README; any name but "__main__" gives the same
-verdicts. `re` stays refused (a pattern can backtrack in C code beyond every budget): its
-functions are there and each refuses, naming why. The simulator's error classes are not bound
-(their names are not in the README).
+verdicts. As the authors' module was, it is importable (sys.modules holds a module of that
+name, SCORER): dataclasses looks a class's module up there to read string annotations
+(`from __future__ import annotations`, `x: "int"`) and to make the methods it writes. It is an
+empty module (dataclasses only asks it whether a name is typing's ClassVar or its own InitVar
+or KW_ONLY, which no name of the authors' globals was), so those methods see Python's builtins
+as under the authors' exec; no program can reach it (no import of it is allowed).
+
+`re` stays refused (a pattern can backtrack in C code beyond every budget): its functions are
+there and each refuses, naming why. The simulator's error classes are not bound (their names
+are not in the README).
 """
 from __future__ import annotations
 
 import re as _re
+import sys
+import types
 
 from .budget import Forbidden
 from .modules import REFUSED, Module, load
@@ -43,6 +52,7 @@ class _RefusedFunction:
         return f"<{self.name}: not available in the sandbox>"
 
 
+SCORER = sys.modules.setdefault(MODULE_NAME, types.ModuleType(MODULE_NAME, "the paper protocol's namespace"))
 _RE = {name: _RefusedFunction(f"re.{name}") for name in _re.__all__ if name.islower()}
 
 

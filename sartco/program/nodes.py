@@ -35,7 +35,6 @@ CHECKED_OPS = {ast.Add: "$add", ast.Mult: "$mul", ast.Pow: "$pow", ast.LShift: "
 INPLACE_OPS = {ast.Add: "$iadd", ast.Mult: "$imul", ast.Pow: "$ipow", ast.LShift: "$ilshift", ast.Mod: "$imod"}
 
 
-
 def fail(node, text: str):
     line = getattr(node, "lineno", None)
     exc = Forbidden(f"line {line}: {text}" if line else text)
@@ -51,7 +50,7 @@ class Walk:
     def __init__(self):
         self.stored: set[str] = set()  # names bound, attributes stored
         self.denied: dict[str, ast.AST] = {}
-        self.methods: set[int] = set()  # the def nodes of a class body that define DEFINABLE dunders
+        self.methods: set[int] = set()  # the defs and names of a class body that bind DEFINABLE dunders
         self.reads: dict[str, ast.AST] = {}  # attributes read that the sandbox does not offer
         self.strings: list[str] = []  # the string constants (their words may name namedtuple fields)
         self.modules: dict[str, str] = {}  # name bound by an import -> module
@@ -60,7 +59,7 @@ class Walk:
 def check_name(node, name: str, store: bool, walk: Walk):
     if name[0] == "$":  # ours: no Python source can spell it
         return
-    if name[0] == "_" and name[:2] == "__" and (store or name != "__name__"):
+    if name[0] == "_" and name[:2] == "__" and (id(node) not in walk.methods if store else name not in DEFINABLE and name != "__name__"):
         fail(node, f"names starting with two underscores reach the interpreter: {name}")
     if store:
         if name in PROVIDED:
@@ -110,7 +109,7 @@ def _r_function(n, walk):
 
 def _r_class(n, walk):
     """A class statement (classes.py builds it): no keywords, `object` as a base is implied,
-    and its methods may define the DEFINABLE dunders."""
+    and its defs and assignments (`__rmul__ = __mul__`) may bind DEFINABLE dunders (read anywhere)."""
     check_name(n, n.name, True, walk)
     if n.keywords:
         fail(n, f"class {n.name}: class keywords (metaclass=...) are not allowed (a metaclass reaches the interpreter)")
@@ -121,6 +120,8 @@ def _r_class(n, walk):
         elif type(statement) is ast.FunctionDef and statement.name in PROVIDED:  # a method `put`: the
             walk.methods.add(id(statement))  # class's name, not the program's (`robot.put(...)`)
             walk.stored.add(statement.name)
+        elif type(statement) is ast.Assign:  # `__rmul__ = __mul__`
+            walk.methods.update(id(t) for t in statement.targets if type(t) is ast.Name and t.id in DEFINABLE)
     mangle_private(n)
 
 
@@ -289,9 +290,8 @@ def _is_list_field(t: type, field: str) -> bool:
     if t in (A.Lambda, A.IfExp):
         return False
     return field in {
-        "body", "targets", "orelse", "values", "elts", "keys", "generators", "comparators",
-        "keywords", "ifs", "posonlyargs", "kwonlyargs", "kw_defaults", "defaults", "handlers", "finalbody",
-        "decorator_list", "bases",
+        "body", "targets", "orelse", "values", "elts", "keys", "generators", "comparators", "keywords", "ifs",
+        "posonlyargs", "kwonlyargs", "kw_defaults", "defaults", "handlers", "finalbody", "decorator_list", "bases", "items",
     } or (field == "args" and t in (A.Call, A.arguments))
 
 

@@ -1,6 +1,6 @@
 """numpy's functions in the stand-in (arrays.py has the arrays): `array`/`asarray`, `zeros`,
 `ones`, `full`, `arange`, `linspace` (numpy's formula: start + i * step, the last item stop),
-`ndindex`, `where` (1 and 3 arguments), `meshgrid`, `argwhere`, `unique`, `concatenate` (axis 0),
+`ndindex`, `ndenumerate`, `where` (1 and 3 arguments), `nonzero`, `meshgrid`, `argwhere`, `unique`, `concatenate` (axis 0),
 `zeros_like`/`ones_like`, `sum`/`min`/`max`/`any`/`all`/`mean` of a whole array,
 and `sqrt`, `floor`, `ceil`, `abs` elementwise. Every result is within the length budget.
 """
@@ -63,6 +63,17 @@ def linspace(start, stop, num=50, endpoint=True, dtype=None):
 def ndindex(*shape):
     dims = _shape(shape[0] if len(shape) == 1 and not isinstance(shape[0], int) else shape)
     return itertools.product(*map(range, dims))
+
+
+def ndenumerate(a):
+    """((index, ...), item) for every item of `a`, in order."""
+    a = a if isinstance(a, ndarray) else array(a)
+    return zip(itertools.product(*map(range, a.shape)), a.data)
+
+
+def nonzero(a):
+    """The indices of the items that are not zero, one array per axis (np.where of one argument)."""
+    return where(a)
 
 
 def where(condition, x=None, y=None):
@@ -134,7 +145,8 @@ def _kind_of(a):
 
 MEMBERS = {
     "ndarray": ndarray, "array": array, "asarray": array, "zeros": zeros, "ones": ones, "full": full,
-    "arange": arange, "linspace": linspace, "ndindex": ndindex, "where": where,
+    "arange": arange, "linspace": linspace, "ndindex": ndindex, "ndenumerate": ndenumerate, "where": where,
+    "nonzero": nonzero,
     **{name: _whole(name) for name in ("sum", "min", "max", "any", "all", "mean")},
     "amin": _whole("min"), "amax": _whole("max"), "meshgrid": meshgrid, "argwhere": argwhere, "unique": unique,
     "concatenate": concatenate, "zeros_like": _like(0), "ones_like": _like(1),

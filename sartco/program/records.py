@@ -4,7 +4,10 @@ All three make classes of the program (classes.ProgramClass), with what the stan
 makes of them: dataclasses' own `__init__`/`__repr__`/`__eq__` (and order, frozen), the
 namedtuple's tuple, fields, `_asdict`, `_replace`, `_make`. Only program classes are decorated;
 a namedtuple's names are checked by collections itself (identifiers, no leading underscore).
-`dataclasses.fields()` is not offered: its Field objects are the class's internals.
+A dataclass hashes as Python's: by its fields when frozen (or `unsafe_hash=True`), unhashable
+when it compares by its fields and is not frozen, and by classes.serial_hash only when Python
+would hash it by identity (`eq=False`). `dataclasses.fields()` gives the Field objects, of which a
+program reads the public attributes (attributes.TYPES).
 """
 from __future__ import annotations
 
@@ -13,9 +16,9 @@ import collections
 import dataclasses
 
 from .budget import Forbidden
-from .classes import EXCEPTION_TYPES, ProgramClass, make
+from .classes import EXCEPTION_TYPES, ProgramClass, make, serial_hash
 
-_OPTIONS = frozenset({"init", "repr", "eq", "order", "unsafe_hash", "frozen", "kw_only", "match_args"})
+_OPTIONS = frozenset({"init", "repr", "eq", "order", "unsafe_hash", "frozen", "kw_only", "match_args", "slots"})
 
 
 def dataclass(cls=None, /, **options):
@@ -27,7 +30,12 @@ def dataclass(cls=None, /, **options):
     def wrap(klass):
         if type(klass) is not ProgramClass:
             raise TypeError("dataclass() decorates a class of the program")
-        return dataclasses.dataclass(klass, **options)
+        if klass.__dict__.get("__hash__") is serial_hash:  # classes.make's, not the program's: dataclass
+            del klass.__hash__  # decides the hash as for any class without one of its own
+        made = dataclasses.dataclass(klass, **options)
+        if made.__hash__ is object.__hash__:  # hashed by identity (eq=False): by serial, as make does
+            made.__hash__ = serial_hash
+        return made
     return wrap if cls is None else wrap(cls)
 
 
@@ -80,7 +88,8 @@ def build_class(body, name, *bases, **keywords):
 
 
 MEMBERS = {
-    "dataclasses": {"dataclass": dataclass, "field": dataclasses.field, "asdict": dataclasses.asdict,
+    "dataclasses": {"dataclass": dataclass, "field": dataclasses.field, "fields": dataclasses.fields,
+                    "MISSING": dataclasses.MISSING, "KW_ONLY": dataclasses.KW_ONLY, "asdict": dataclasses.asdict,
                     "astuple": dataclasses.astuple, "replace": dataclasses.replace,
                     "is_dataclass": dataclasses.is_dataclass, "FrozenInstanceError": dataclasses.FrozenInstanceError},
 }

@@ -153,3 +153,21 @@ def test_module_semantics_stay_a_scripts(program):
         expected = None
     got = sandbox(program, MODULE)
     assert got == expected if expected is not None else got[1] == E.NAME_ERROR
+
+
+# the authors' module was importable: dataclasses reads string annotations through it
+RECORDS = [
+    "from __future__ import annotations\nfrom dataclasses import dataclass\n@dataclass\nclass P:\n    x: int\n"
+    "    nxt: P | None = None\np = P(2, P(3))\nput(board, 'washer', 'red', p.x, p.nxt.x)",
+    "from dataclasses import dataclass\n@dataclass(frozen=True)\nclass P:\n    x: 'int'\n    y: 'int' = 1\n"
+    "    tags: 'tuple' = ()\ns = {P(2), P(2), P(4, 5)}\n"
+    "for p in s:\n    put(board, 'nut', 'blue', p.x, p.y)\nput(board, 'washer', 'red', 0, len(s))",
+    "import dataclasses\n@dataclasses.dataclass(order=True)\nclass P:\n    x: 'typing.Any'\n    y: 'ClassVar[int]' = 3\n"
+    "for p in sorted([P(4), P(1)]):\n    put(board, 'screw', 'green', p.x, p.y)\nput(board, 'washer', 'red', 0, len(dataclasses.fields(P)))",
+]
+
+
+def test_a_dataclass_with_string_annotations_runs_as_under_the_authors_exec():
+    got = agree(RECORDS)
+    assert all(ex.ok and ex.cells for ex in got), [ex.message for ex in got]
+    assert [sandbox(p, MODULE) for p in RECORDS] == [script(p) for p in RECORDS]

@@ -1,9 +1,12 @@
-"""The honest constructs of issue 21 (item 5) run as plain `exec` runs them.
+"""The honest constructs of issue 21 (item 5) and issue 32 (item 6) run as plain `exec` runs them.
 
 Each program is one construct models write: classes (methods, properties, static and class
-methods, inheritance, dunder methods), dataclasses, namedtuples, generators, the main guard,
-seeded random, `from __future__ import annotations`, functools.wraps, chain.from_iterable,
-unbound methods of built-in types, and numpy arrays used for coordinates. The oracle is plain
+methods, inheritance, dunder methods, `__rmul__ = __mul__`), dataclasses (frozen ones in a set,
+unsafe_hash, a plain one unhashable, slots and kw_only, fields()), namedtuples, generators
+(StopIteration.value), the main guard, seeded random, `from __future__ import annotations`,
+functools.wraps, attributes on the program's own functions, contextlib.suppress,
+chain.from_iterable, unbound methods of built-in types, and numpy arrays used for coordinates
+(ndenumerate, nonzero). The oracle is plain
 `exec` of the same text as a script (`__name__ == "__main__"`) with the real modules (numpy,
 random) and a reference `put` that takes numpy's integers as the authors' simulator did (it
 indexed a numpy board with them); the sandbox must give ok and exactly the same cells.
@@ -144,6 +147,56 @@ CONSTRUCTS = {
     "numpy linspace and ones": (
         "import numpy as np\nys = np.linspace(0, 7, 4).astype(int)\nfor y in ys:\n    put(board, 'washer', 'green', 6, y)\n"
         "o = np.ones(3, dtype=int) * 4\nput(board, 'nut', 'red', o[0], int(o.sum()) % 8)\nprint(np.array([1, 2]) == np.array([1, 3]))"),
+    # issue 32, item 6
+    "frozen dataclass in a set": (
+        "from dataclasses import dataclass\n@dataclass(frozen=True)\nclass P:\n    x: int\n    y: int\n"
+        "seen = {P(1, 2), P(1, 2), P(3, 4)}\nfor p in sorted(seen, key=lambda p: (p.x, p.y)):\n"
+        "    put(board, 'washer', 'red', p.x, p.y)\nput(board, 'nut', 'blue', len(seen), int(P(3, 4) in seen))"),
+    "dataclass unsafe_hash": (
+        "from dataclasses import dataclass\n@dataclass(unsafe_hash=True)\nclass P:\n    x: int\n    y: int\n"
+        "colors = {P(1, 2): 'red', P(5, 5): 'blue'}\ncolors[P(1, 2)] = 'green'\nfor p, c in colors.items():\n"
+        "    put(board, 'washer', c, p.x, p.y)\nput(board, 'nut', 'red', len(colors), int(hash(P(0, 1)) == hash(P(0, 1))))"),
+    "plain dataclass is unhashable": (
+        "from dataclasses import dataclass\n@dataclass\nclass P:\n    x: int\n@dataclass(eq=False)\nclass Q:\n    x: int\n"
+        "try:\n    s = {P(1)}\nexcept TypeError as e:\n    put(board, 'washer', 'red', 0, len(str(e)) % 8)\n"
+        "put(board, 'nut', 'blue', 1, len({Q(1), Q(1)}))\nput(board, 'screw', 'green', 2, int(P.__hash__ is None))"),
+    "dataclass slots and kw_only": (
+        "from dataclasses import dataclass, field\n@dataclass(slots=True, kw_only=True)\nclass P:\n    x: int\n    y: int = 3\n"
+        "    tags: list = field(default_factory=list)\np = P(x=2)\np.tags.append('red')\nput(board, 'washer', p.tags[0], p.x, p.y)\n"
+        "try:\n    P(1, 2)\nexcept TypeError:\n    put(board, 'nut', 'blue', 0, 0)\ntry:\n    p.z = 1\nexcept AttributeError:\n"
+        "    put(board, 'nut', 'green', 0, 1)\nput(board, 'screw', 'red', 0, 2 + int(P(x=1) == P(x=1)))"),
+    "dataclasses.fields": (
+        "import dataclasses\nfrom dataclasses import dataclass, field, fields\n@dataclass\nclass Piece:\n    shape: str\n"
+        "    color: str = 'red'\n    cells: list = field(default_factory=list)\np = Piece('washer')\n"
+        "for i, f in enumerate(fields(p)):\n    put(board, p.shape, p.color, i, len(f.name))\n"
+        "names = [f.name for f in fields(Piece) if f.default is dataclasses.MISSING]\n"
+        "put(board, 'nut', 'blue', 4, len(names))\nput(board, 'nut', 'green', 5, int(fields(Piece)[1].default == 'red'))"),
+    "__rmul__ = __mul__ in a class body": (
+        "class V:\n    def __init__(self, x, y):\n        self.x, self.y = x, y\n    def __mul__(self, k):\n"
+        "        return V(self.x * k, self.y * k)\n    __rmul__ = __mul__\n    def __add__(self, o):\n"
+        "        return V(self.x + o.x, self.y + o.y)\n    __radd__ = __add__\n    __hash__ = None\n"
+        "for v in [2 * V(1, 2), V(3, 1) * 2, V(1, 1) + V(0, 2)]:\n    put(board, 'washer', 'red', v.x, v.y)"),
+    "StopIteration.value": (
+        "def walk(n):\n    for i in range(n):\n        yield i\n    return n * 2\nit = walk(2)\nwhile True:\n    try:\n"
+        "        y = next(it)\n    except StopIteration as stop:\n        put(board, 'nut', 'blue', stop.value, len(stop.args))\n"
+        "        break\n    put(board, 'washer', 'red', 0, y)"),
+    "np.ndenumerate and np.nonzero": (
+        "import numpy as np\ngrid = np.zeros((8, 8), dtype=int)\ngrid[1, 2] = 1\ngrid[6, 0] = 2\n"
+        "for (x, y), v in np.ndenumerate(grid):\n    if v:\n        put(board, 'washer', ['red', 'blue'][v - 1], x, y)\n"
+        "xs, ys = np.nonzero(grid)\nfor x, y in zip(xs, ys):\n    put(board, 'nut', 'green', x, y)\n"
+        "for i in np.nonzero([0, 3, 0, 4])[0]:\n    put(board, 'screw', 'yellow', 5, i)\n"
+        "for i, v in np.ndenumerate([7, 6]):\n    put(board, 'washer', 'yellow', v, i[0])"),
+    "attributes on the program's functions": (
+        "from functools import wraps\ndef counted(f):\n    @wraps(f)\n    def wrapper(*args):\n        wrapper.calls += 1\n"
+        "        return f(*args)\n    wrapper.calls = 0\n    return wrapper\n@counted\ndef place(x, y):\n"
+        "    put(board, 'washer', 'red', x, y)\nplace(1, 1)\nplace(2, 2)\nput(board, 'nut', 'blue', place.calls, 0)\n"
+        "step = lambda: 0\nstep.size = 3\ndel step.size\ntry:\n    s = step.size\nexcept AttributeError:\n"
+        "    put(board, 'screw', 'green', 5, len(place.__name__))"),
+    "contextlib.suppress and nullcontext": (
+        "import contextlib\nfrom contextlib import nullcontext, suppress\nplaced = {}\nwith contextlib.suppress(KeyError, IndexError):\n"
+        "    put(board, 'washer', 'red', 0, 0)\n    placed['x']\n    put(board, 'washer', 'red', 1, 0)\n"
+        "with suppress(ValueError) as nothing, nullcontext(board) as b:\n    put(b, 'nut', 'blue', 2, int(nothing is None))\n"
+        "try:\n    with suppress(KeyError):\n        [][1]\nexcept IndexError:\n    put(board, 'screw', 'green', 3, 3)"),
 }
 NAMES = list(CONSTRUCTS)
 

@@ -89,6 +89,15 @@ HOSTILE = [
     ("exception traceback", "try:\n    1 / 0\nexcept ZeroDivisionError as e:\n    t = e.__traceback__", F, None),
     ("exception method", "try:\n    1 / 0\nexcept ZeroDivisionError as e:\n    t = e.with_traceback(None)", F, None),
     ("with", "with open(CANARY) as f:\n    pass", F, None),
+    # issue 32: `with` takes the stand-ins' context managers only, and none swallows a stop
+    ("with a program's context manager", "class C:\n    def __enter__(self):\n        return self\n"
+     "    def __exit__(self, *a):\n        return True\nwith C():\n    pass", F, None),
+    ("suppress swallows timeout", "import contextlib\nwith contextlib.suppress(BaseException):\n    while True:\n"
+     "        pass\nput(board, 'washer', 'red', 0, 0)", T, None),
+    ("suppress swallows length", "from contextlib import suppress\nwith suppress(Exception):\n    x = [0] * 10**9", R, None),
+    ("suppress swallows refusal", "from contextlib import suppress\nwith suppress(Exception):\n    n = (5).count(1)", F, None),
+    ("suppress swallows recursion", "from contextlib import suppress\ndef f():\n    return f()\n"
+     "with suppress(RuntimeError):\n    f()", R, None),
     ("global", "def f():\n    global put\n    put = 1\nf()", F, None),
     ("refused builtin bound later", "def f():\n    return open(CANARY)\nf()\nopen = 1", F, None),
     ("generator function frame", "def f():\n    yield 1\nfr = f().gi_frame", F, None),

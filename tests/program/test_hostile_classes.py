@@ -27,6 +27,9 @@ HOSTILE = {
     "__new__": ("class A:\n    def __new__(cls):\n        return board", F),
     "__slots__ in the body": ("class A:\n    __slots__ = ('x',)", F),
     "dunder assigned in the body": ("class A:\n    __init_subclass__ = print", F),
+    "definable dunder bound outside a class body": ("__eq__ = lambda a, b: True", F),
+    "definable dunder bound in a method": ("class A:\n    def f(self):\n        __eq__ = 1\n        return __eq__", F),
+    "definable dunder bound by a for in a class body": ("class A:\n    for __eq__ in [print]:\n        pass", F),
     "dunder method set later": ("class A:\n    pass\nA.__getattr__ = lambda s, n: 1", F),
     "private name where nothing mangles it": ("class _:\n    def f(self):\n        return self.__dict\n_().f()", F),
     "private name outside a class": ("def f(o):\n    return o.__dict\nf(board)", F),
@@ -57,10 +60,14 @@ HOSTILE = {
     "generator frame": ("def g():\n    yield 1\nf = g().gi_frame", F),
     "generator frame when named": ("gi_frame = 0\ndef g():\n    yield 1\nf = g().gi_frame", X),
     "generator code": ("gi_code = 0\ng = (i for i in [1])\nc = g.gi_code", X),
-    "dataclass fields()": ("from dataclasses import fields", F),
+    "dataclass Field internals": ("from dataclasses import dataclass, fields\n@dataclass\nclass P:\n    x: int\n"
+                                  "_field_type = 0\nf = fields(P)[0]._field_type", X),
     "dataclass internals": ("from dataclasses import dataclass\n@dataclass\nclass P:\n    x: int\nf = P.__dataclass_fields__", F),
     "dataclass on a non-program class": ("from dataclasses import dataclass\nimport collections\nD = dataclass(collections.Counter)", E.TYPE_ERROR),
-    "dataclass slots option": ("from dataclasses import dataclass\n@dataclass(slots=True)\nclass P:\n    x: int", F),
+    "dataclass weakref_slot option": ("from dataclasses import dataclass\n@dataclass(slots=True, weakref_slot=True)\n"
+                                      "class P:\n    x: int", F),
+    "dataclass slot descriptor": ("from dataclasses import dataclass\n@dataclass(slots=True)\nclass P:\n    x: int\n"
+                                  "d = P.x\nv = d.__get__(P(1), P)", F),
     "wraps assigned": ("from functools import wraps\ndef f():\n    pass\nw = wraps(f, assigned=('__globals__',))", E.TYPE_ERROR),
     "namedtuple code injection": ("from collections import namedtuple\nP = namedtuple('P', 'x, y=__import__(\"os\")')", E.VALUE_ERROR),
     "namedtuple module": ("from collections import namedtuple\nP = namedtuple('P', 'x', module='os')", E.TYPE_ERROR),
@@ -73,7 +80,11 @@ HOSTILE = {
     # the world's objects through the new surface
     "attribute store on the board": ("board.puts = 0", F),
     "attribute store on a module": ("import math\nmath.pi = 3", F),
-    "attribute store on a function": ("def f():\n    pass\nf.x = 1", F),
+    # a program's own function takes attributes (`wrapper.calls = 0`); no other function does
+    "attribute store on a stand-in's function": ("import math\nmath.factorial.x = 1", F),
+    "attribute store on a method dataclass wrote": ("from dataclasses import dataclass\n@dataclass\nclass P:\n"
+                                                    "    x: int\nP.__init__.calls = 0", F),
+    "dunder store on the program's function": ("def f(x=1):\n    return x\nf.__defaults__ = (board,)", F),
     "board internals named by a class": ("class A:\n    stacks = 1\nboard.stacks[0].append(('screw', 'red'))", F),
     "forged colour": (SOME_PIECE + "class C:\n    def __eq__(self, o):\n        return True\n    def __hash__(self):\n        return 0\n"
                       "put(board, 'nut', C(), 3, 3)", E.KEY_ERROR),

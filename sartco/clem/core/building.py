@@ -7,12 +7,19 @@ per episode (or once per attempt in a repair experiment) and records each build 
 that the sandbox could not run (`harness_error`) raises HarnessFault from `build_for`: the
 master's harness guard (sartco.clem.core.harness) records it, never as the model's error. The
 scorer reads the record back with `BuildRecord.from_json`; it never executes anything.
+
+Every record is strict UTF-8 JSON: `build` and `parse_failure` escape the texts they are given
+(sartco.text.escape, as the game master escapes every answer at its entry), so a lone surrogate
+or a control character in the code is recorded, run and shown as the same visible escape, and
+the sandbox's message is escaped alike. Escaping escaped text changes nothing, so a game's
+records (its answers are escaped before they get here) are the same as before.
 """
 from __future__ import annotations
 
 from dataclasses import dataclass, field, fields
 
 from sartco.episode import BUILD_KEY
+from sartco.text import escape
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, SUCCESS_CATEGORY, ErrorCode, category_family
 from sartco.world.render import diff_svg, differing_cells
 
@@ -93,9 +100,12 @@ def compose_program(builder_code: str, *, given_code: str = "", rows: int = DEFA
 
 def build(builder_code: str, target: dict, *, given_code: str = "", rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS,
           turn_codes: list[str] | None = None) -> BuildRecord:
-    """Execute the builder's code on a fresh board and compare it with the target."""
+    """Execute the builder's code (escaped: see the module's docstring) on a fresh board and
+    compare it with the target."""
     from sartco.program import execute, judge  # the only place model-written code runs
 
+    builder_code, given_code = escape(builder_code), escape(given_code)
+    turn_codes = [escape(code) for code in turn_codes] if turn_codes else [builder_code]
     program = compose_program(builder_code, given_code=given_code, rows=rows, cols=cols)
     ex = execute(program, rows=rows, cols=cols)
     cmp = judge(ex.ok, ex.error, ex.cells, target)
@@ -103,10 +113,10 @@ def build(builder_code: str, target: dict, *, given_code: str = "", rows: int = 
     es = int(cmp.es)
     category = SUCCESS_CATEGORY if es else str(ErrorCode(cmp.category))  # the error unless the program ran
     return BuildRecord(
-        builder_code=builder_code, program=program, ok=bool(ex.ok), error=error, message=ex.message or "",
+        builder_code=builder_code, program=program, ok=bool(ex.ok), error=error, message=escape(ex.message or ""),
         cells=ex.cells, target=target, puts=int(ex.puts), es=es, category=category,
         precision=float(cmp.precision), recall=float(cmp.recall), f1=float(cmp.f1),
-        rows=rows, cols=cols, turn_codes=list(turn_codes or [builder_code]),
+        rows=rows, cols=cols, turn_codes=turn_codes,
     )
 
 
@@ -114,12 +124,12 @@ def parse_failure(target: dict, message: str, *, turn_codes: list[str] | None = 
                   rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS,
                   error: ErrorCode = ErrorCode.PARSE_ERROR) -> BuildRecord:
     """The record of an episode aborted because an answer held no code (or, with
-    error=HARNESS_ERROR, because the harness failed): nothing was executed."""
-    code = "\n".join(turn_codes or [])
+    error=HARNESS_ERROR, because the harness failed): nothing was executed. Texts escaped."""
+    turn_codes = [escape(code) for code in turn_codes or []]
     return BuildRecord(
-        builder_code=code, program="", ok=False, error=str(error), message=message,
+        builder_code="\n".join(turn_codes), program="", ok=False, error=str(error), message=escape(message),
         cells={}, target=target, puts=0, es=0, category=str(error),
-        precision=0.0, recall=0.0, f1=0.0, rows=rows, cols=cols, turn_codes=list(turn_codes or []),
+        precision=0.0, recall=0.0, f1=0.0, rows=rows, cols=cols, turn_codes=turn_codes,
     )
 
 
