@@ -12,34 +12,37 @@ created one; `cells` is that board also when the program failed part way.
 The contract: any program that plain `exec` with `board`, `put` and `init_board` runs correctly,
 run as a script (`__name__ == "__main__"`), and that reaches nothing outside the task's world,
 builds the same board here. Ordinary Python works: functions, lambdas, decorators, loops,
-comprehensions, generators, classes (with the ordinary dunder methods, properties, static and
-class methods, inheritance, super()), try/except/else/finally, raise, assert, del,
+comprehensions, generators, classes (with the ordinary dunder methods, also bound as
+`__rmul__ = __mul__`, properties, static and class methods, inheritance, super()), attributes on
+the program's own functions, `with contextlib.suppress(...)`, try/except/else/finally, raise, assert, del,
 global/nonlocal, annotations, `_` names, set/dict/list displays, the common methods of
 str/list/dict/set/tuple (and of collections' defaultdict/Counter/deque), f-strings,
 `str.format` and `%` formatting, map, filter, isinstance, float, next/iter, and imports of math,
-itertools, functools, typing, collections, copy, operator, string, json, dataclasses, random (CPython's
+itertools, functools, typing, collections, copy, operator, string, json, dataclasses (with
+`fields`), contextlib (suppress, nullcontext), random (CPython's
 sequence; seeded with 0 unless the program seeds it) and numpy (arrays with numpy's semantics
 for the subset models use), all under the budgets of Limits.
 
 Refused (`forbidden`, with the reason in the message), because they reach the interpreter, the
 file system, the network or the scoring:
 - names and attributes with two leading underscores (`__class__`, `__import__`, ...) except the
-  dunder methods a class may define and `__name__`; any other attribute than the allowed
-  methods, module members and what the program defines; attribute stores except on the
-  program's own objects (attributes.py has the rule);
+  dunder methods a class may define (by def or by assignment in its body) and `__name__`; any
+  other attribute than the allowed methods, module members and what the program defines;
+  attribute stores except on the program's own objects and functions (attributes.py has the rule);
 - eval, exec, compile, open, input, getattr/setattr, type, object, globals/vars, breakpoint and
   Python's other builtins that are not listed above (unless the program binds the name itself);
 - imports of anything but the stand-in modules (os, sys, subprocess, re, ...), and the
   members they do not offer (typing.get_type_hints, numpy.linalg, ...);
 - metaclasses, class keywords, bases other than the program's classes, exceptions and
   NamedTuple, and dunder definitions that change how Python treats an object (classes.py);
-- with, async/await, match, try/except*;
+- `with` on anything but contextlib's suppress/nullcontext (a program's class cannot define
+  __enter__/__exit__), async/await, match, try/except*;
 - redefining `put` or `init_board`;
 - format fields that read attributes or items (`{0.x}`, `{0[k]}`), widths above 999, `*` widths.
 Budget stops: `timeout` (steps, wall time) and `resource_limit` (depth, length, integer size,
 memory, source size); no handler catches them (nor a refusal), and they stay the verdict when a
 program swallows them (an except handler re-raises them; a `finally` body's first statement
-remembers a RecursionError or MemoryError passing through). A program that crashes its worker
+remembers a RecursionError or MemoryError passing through). A program that crashes its process
 gets `runtime_error` "crashed its process (SIGSEGV)".
 
 The walls (issue 32): the checks above refuse early and explain, but no score and no host
@@ -66,12 +69,14 @@ Modules (each one's docstring has the details):
   methods.py      the methods a program may call per type, and the checked ones
   modules.py      the stand-in modules a program may import
   classes.py      ProgramClass: what a program's class may define and derive from
-  records.py      class statements (build_class), dataclass, namedtuple, NamedTuple
+  records.py      class statements (build_class), dataclass (and fields), namedtuple, NamedTuple
   attributes.py   the one rule for `obj.name` (reads: $attr, writes: $fields)
   chance.py       random: CPython's generator, one per program
   arrays.py       numpy's arrays;  numpy_members.py  numpy's functions
-  runtime.py      run one prepared program in its namespace() (a `__main__` module), map outcomes
-  namespaces.py   the paper protocol's namespace (the authors' exec: separate globals and locals)
+  runtime.py      run one prepared program in its namespace() (a `__main__` module), map outcomes,
+                  the answer a child sends (answer);  breach.py  the assume-breach tests' run
+  namespaces.py   the paper protocol's namespace (the authors' exec: separate globals and locals;
+                  the scorer's module registered in sys.modules, importable as the authors' was)
   json_module.py  the json stand-in (plain data, output counted against the length budget)
   confine.py      the kernel's walls: the seccomp filter (compiled by libseccomp) and rlimits
   worker.py       the template process: one confined child per program, its end and answer

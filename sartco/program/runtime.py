@@ -52,7 +52,7 @@ _STEPS = repeat(True, 0)  # the current program's step counter
 
 def _caught(exc):
     """The first statement of every except handler: budget stops and refusals go on."""
-    if isinstance(exc, (Limit, Forbidden, MemoryError, RecursionError)) or length_hint(_STEPS) == 0:
+    if isinstance(exc, budget.STOPS) or length_hint(_STEPS) == 0:
         raise exc
 
 
@@ -141,7 +141,7 @@ EXCEPTION_CODES = (
 )
 
 
-def _describe(exc: BaseException) -> str:
+def describe(exc: BaseException) -> str:
     line = None
     tb = exc.__traceback__
     while tb is not None:
@@ -164,7 +164,7 @@ def _describe(exc: BaseException) -> str:
     return f"line {line}: {text}" if line else text
 
 
-def _classify(exc: BaseException) -> ErrorCode:
+def classify(exc: BaseException) -> ErrorCode:
     for kinds, code in EXCEPTION_CODES:
         if isinstance(exc, kinds):
             return exc.code if code is None else code
@@ -204,37 +204,16 @@ def answer(source, rows: int, cols: int, limits, semantics: str = MODULE) -> byt
     decides the board (verdict.py): nothing else of the child's board leaves it."""
     ok, error, message, board = _run(compile_program(source, limits), rows, cols, limits, semantics,
                                      source if type(source) is str else "")
-    return _encode(ok, error, message, board)
+    return encode(ok, error, message, board)
 
 
-def _encode(ok, error, message, board) -> bytes:
+def encode(ok, error, message, board) -> bytes:
     log: list = []
     if board is not None:
         for (shape, color), x, y in board.log:
             log += (str(shape), str(color), int(x), int(y))
     shape = (board.rows, board.cols) if board is not None else (0, 0)
     return json.dumps([ok, error, message, *shape, log]).encode("ascii")
-
-
-def breached(source: str, rows: int, cols: int) -> bytes:
-    """The assume-breach tests' run (worker.py mode "breach"): `source` exec'd with Python's real
-    builtins and none of the sandbox's checks, as if every one had fallen; the answer as answer()
-    makes it from the global `board` or the last board made. Only the kernel's walls hold."""
-    last = [Board(rows, cols)]
-
-    def init_board(rows=DEFAULT_ROWS, cols=DEFAULT_COLS):
-        last[0] = Board(rows, cols)
-        return last[0]
-
-    env = {"__builtins__": builtins, "__name__": "__main__", "board": last[0], "put": put, "init_board": init_board}
-    ok, error, message = True, None, ""
-    try:
-        exec(compile(source, "<program>", "exec"), env)
-    except BaseException as exc:
-        ok, error, message = False, _classify(exc), clean(_describe(exc))
-    result = env.get("board")
-    fresh, _ = checked(result if type(result) is Board else last[0])
-    return _encode(ok, error, message, fresh)
 
 
 def _run(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE, source: str = "") -> tuple:
@@ -300,4 +279,4 @@ def _run(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE,
 def _verdict(exc: BaseException | None, limits) -> tuple:
     if length_hint(_STEPS) == 0:
         return E.TIMEOUT, f"the program used up its budget of {limits.steps} steps (loop iterations and calls)"
-    return _classify(exc), _describe(exc)
+    return classify(exc), describe(exc)

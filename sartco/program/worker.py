@@ -72,9 +72,9 @@ class Template:
     """What the children are forked from: the filter, the template's size, /dev/null."""
 
     def __init__(self, bpf: bytes, breach: bool = False):
-        from . import confine, runtime
+        from . import breach, confine, runtime
 
-        self.runtime = runtime
+        self.runtime, self.breached = runtime, breach.breached
         for name in PRELOAD:
             __import__(name)
         self.filter = confine.Walls(bpf)  # raises confine.Unconfinable
@@ -230,7 +230,7 @@ class Template:
                 if breach and not self.breach:
                     how, status, answer = b"unconfined", 0, b""  # never runs: this template is not the tests'
                 elif breach:
-                    how, status, answer = self.fork(lambda: runtime.breached(source, rows, cols), limits)
+                    how, status, answer = self.fork(lambda: self.breached(source, rows, cols), limits)
                 else:
                     how, status, answer = self.fork(
                         lambda: runtime.answer(source, rows, cols, limits, semantics), limits)
