@@ -72,9 +72,10 @@ class Template:
     """What the children are forked from: the filter, the template's size, /dev/null."""
 
     def __init__(self, bpf: bytes, breach: bool = False):
-        from . import breach, confine, runtime
+        from . import confine, runtime
+        from .breach import breached
 
-        self.runtime, self.breached = runtime, breach.breached
+        self.runtime, self.breached = runtime, breached
         for name in PRELOAD:
             __import__(name)
         self.filter = confine.Walls(bpf)  # raises confine.Unconfinable
