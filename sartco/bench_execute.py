@@ -34,7 +34,8 @@ from pathlib import Path
 from sartco.dataset import SHARED_DATA as DEFAULT_DATA
 from sartco.errors import UserError
 from sartco.program import pool
-from sartco.program.pool import default_workers, execute_many, shutdown
+from sartco.program import execute_many, shutdown
+from sartco.program.pool import default_workers
 from sartco.program.serve import serve
 from sartco.published.files import require_data
 from sartco.published.gold import gold_programs
