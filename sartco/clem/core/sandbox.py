@@ -1,0 +1,17 @@
+"""The game core's one door into the sandbox: every program a build (sartco.clem.core.building)
+or a function probe (sartco.clem.core.probes) runs goes through `run_many`, one batch of programs
+on fresh boards of one size, and every verdict through `judge`.
+
+sartco.program's batch call is named here once: when the sandbox becomes an object with
+execute / execute_many / close, `run_many` is the one line to change.
+"""
+from __future__ import annotations
+
+from sartco.program import Execution, execute_many, judge
+
+__all__ = ["run_many", "judge"]
+
+
+def run_many(programs: list[str], rows: int, cols: int) -> list[Execution]:
+    """Each program on its own fresh rows x cols board, results in input order."""
+    return execute_many(programs, rows, cols) if programs else []
