@@ -159,8 +159,13 @@ def build_for(instance: dict, builder_code: str, turn_codes: list[str] | None = 
     record = build(builder_code, instance["target"], given_code=instance["given_code"],
                    rows=instance["rows"], cols=instance["cols"], turn_codes=turn_codes)
     if record.error == ErrorCode.HARNESS_ERROR:
-        raise HarnessFault(f"sandbox: {record.message}")
+        raise sandbox_fault(record)
     return record
+
+
+def sandbox_fault(record: BuildRecord) -> HarnessFault:
+    """The harness fault of a build the sandbox could not run (category harness_error)."""
+    return HarnessFault(f"sandbox: {record.message}")
 
 
 def parse_failure_for(instance: dict, message: str, turn_codes: list[str] | None = None,
@@ -176,7 +181,7 @@ def build_answers(instance: dict, answers: list[str]) -> BuildRecord:
     when the sandbox failed."""
     record = build_answers_many([(instance, answers)])[0]
     if record.error == ErrorCode.HARNESS_ERROR:
-        raise HarnessFault(f"sandbox: {record.message}")
+        raise sandbox_fault(record)
     return record
 
 
