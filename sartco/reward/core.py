@@ -9,6 +9,7 @@ scores.json names by the scorer's own functions (scoring.build_scores, probe_sco
 """
 from __future__ import annotations
 
+import json
 import math
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -71,6 +72,19 @@ class Episodes(Mapping):
                 if episode["id"] in instances:
                     raise UserError(f"{path}: episode id {episode['id']!r} occurs twice (ids must be unique)")
                 instances[episode["id"]] = episode["instance"]
+        return cls(instances)
+
+    @classmethod
+    def from_rows(cls, rows: Iterable[Mapping]) -> "Episodes":
+        """The episodes of `sartco export-dataset` rows (a Hugging Face dataset or its JSON lines):
+        id -> the row's `episode`."""
+        instances: dict[str, dict] = {}
+        for k, row in enumerate(rows):
+            try:
+                instances[row["id"]] = json.loads(row["episode"])
+            except (KeyError, TypeError, ValueError) as exc:
+                raise ValueError(f"row {k}: not a row of sartco export-dataset (an 'id' and an 'episode' "
+                                 f"JSON text expected; {type(exc).__name__}: {exc})") from None
         return cls(instances)
 
     def __getitem__(self, key: str) -> dict:
