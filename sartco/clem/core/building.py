@@ -25,6 +25,9 @@ ATTEMPT_PICTURE = "boards_{}.svg"   # attempt 1, 2, ... (every episode has attem
 PICTURE_ALT = "target (left) and built board (right); differing cells framed; a stack's pieces bottom to top"
 # what the last step of an episode puts into clemcore's step info (the gym env's `info`): info key -> record field
 INFO_FIELDS = {"es": "es", "cell_f1": "f1", "error_category": "category", "puts": "puts"}
+# the same facts, under this key, in every player's context after the final build: the observation a
+# trainer gets at the episode's end (clem serve's OpenEnv serialisation keeps the context and drops info)
+CONTEXT_KEY = "sartco_scores"
 
 
 @dataclass(frozen=True, slots=True)
@@ -223,7 +226,8 @@ def record_build(game_master, attempts: list[BuildRecord], *, final: bool, shown
     its function (with the episode's `instance`, sartco.clem.core.probes), move the game state to
     the outcome of the attempts (or, for the paper protocol, to the `share` of turns that succeeded)
     and hand ES, cell F1, category and puts to clemcore's step info (what a gym env's `info` and
-    reward function see, sartco.clem.instruct.training)."""
+    reward function see, sartco.clem.instruct.training) and, under CONTEXT_KEY, to every player's
+    context (the observation at the episode's end, also over `clem serve`; its text unchanged)."""
     from .probes import log_probes
 
     record = attempts[-1]
@@ -242,4 +246,10 @@ def record_build(game_master, attempts: list[BuildRecord], *, final: bool, shown
         set_attempts_outcome(game_master.state, [a.category for a in attempts])
     else:
         set_share_outcome(game_master.state, share)
-    game_master.info.update({key: getattr(record, name) for key, name in INFO_FIELDS.items()})
+    facts = {key: getattr(record, name) for key, name in INFO_FIELDS.items()}
+    game_master.info.update(facts)
+    for player in game_master.get_players():
+        context = game_master.get_context_for(player)
+        if context is not None:  # a player who got no turn observes clemcore's "the game ended" text
+            extras = {key: value for key, value in context.items() if key not in ("role", "content")}
+            game_master.set_context_for(player, context["content"], **{**extras, CONTEXT_KEY: dict(facts)})
