@@ -78,14 +78,19 @@ class Episodes(Mapping):
     def from_rows(cls, rows: Iterable[Mapping]) -> "Episodes":
         """The episodes of `sartco export-dataset` rows (a Hugging Face dataset or its JSON lines):
         id -> the row's `episode`."""
-        instances: dict[str, dict] = {}
+        episodes = cls({})
+        episodes.include(rows)
+        return episodes
+
+    def include(self, rows: Iterable[Mapping]) -> None:
+        """Add the episodes of `sartco export-dataset` rows whose id is not known yet."""
         for k, row in enumerate(rows):
             try:
-                instances[row["id"]] = json.loads(row["episode"])
+                if row["id"] not in self._instances:
+                    self._instances[row["id"]] = json.loads(row["episode"])
             except (KeyError, TypeError, ValueError) as exc:
                 raise ValueError(f"row {k}: not a row of sartco export-dataset (an 'id' and an 'episode' "
                                  f"JSON text expected; {type(exc).__name__}: {exc})") from None
-        return cls(instances)
 
     def __getitem__(self, key: str) -> dict:
         return self._instances[key]
