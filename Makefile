@@ -24,8 +24,8 @@ main: $(STAMP)
 test: $(STAMP)
 	$(BIN)/python -m pytest
 
-## The trainers' interfaces against the real libraries: one GRPO step of a tiny model on CPU
-## (the `train` extra: torch's CPU build, trl; about 1 GB and 2 minutes to install).
+## The trainers' interfaces against the real libraries: one GRPO step of a tiny model on CPU, verl's
+## reward managers (the `train` extra: torch's CPU build, trl, verl; see the README for its size).
 TRAIN_STAMP := $(VENV)/.installed-train
 $(TRAIN_STAMP): $(STAMP)
 	$(BIN)/python -m pip install -q -e ".[dev,train]"

@@ -99,3 +99,59 @@ def test_one_grpo_step_of_a_tiny_model_logs_the_reward(rows, tmp_path):
     assert logged, trainer.state.log_history
     rewards = [x for _, out in calls for x in out]
     assert logged[0]["rewards/sartco_es/mean"] == pytest.approx(sum(rewards) / len(rewards))
+
+
+def byte_tokenizer(texts: list[str]):
+    """A byte-level BPE tokenizer made from the texts: decoding gives the exact text back."""
+    from tokenizers import Tokenizer, decoders, models, pre_tokenizers, trainers
+    from transformers import PreTrainedTokenizerFast
+
+    tokenizer = Tokenizer(models.BPE())
+    tokenizer.pre_tokenizer = pre_tokenizers.ByteLevel(add_prefix_space=False)
+    tokenizer.decoder = decoders.ByteLevel()
+    tokenizer.train_from_iterator(texts, trainers.BpeTrainer(vocab_size=600, special_tokens=["[PAD]"],
+                                                             initial_alphabet=pre_tokenizers.ByteLevel.alphabet()))
+    return PreTrainedTokenizerFast(tokenizer_object=tokenizer, pad_token="[PAD]")
+
+
+@pytest.mark.train
+@pytest.mark.parametrize("manager", ["naive", "batch"])
+def test_verl_reward_managers_call_compute_score(rows, manager):
+    """verl's own reward managers decode the responses of a DataProto and call our compute_score
+    (naive: one answer a call) or compute_score_batch (batch); the reward sits on each response's
+    last token."""
+    torch = require("torch")
+    require("verl")
+    from verl import DataProto
+    from verl.workers.reward_manager.batch import BatchRewardManager
+    from verl.workers.reward_manager.naive import NaiveRewardManager
+
+    from sartco.reward.trainers import compute_score, compute_score_batch
+
+    gold = [json.loads(r["episode"])["gold_code"] for r in rows]
+    answers = [f"```python\n{g}\n```" if k % 2 else f"```python\n{g}\nraise ValueError(1)\n```" for k, g in enumerate(gold)]
+    prompts = [r["prompt"][0]["content"][-200:] for r in rows]
+    tokenizer = byte_tokenizer(prompts + answers)
+    assert tokenizer.decode(tokenizer(answers[0])["input_ids"]) == answers[0]
+
+    def padded(texts, side):
+        tokenizer.padding_side = side
+        out = tokenizer(texts, padding=True, return_tensors="pt")
+        return out["input_ids"], out["attention_mask"]
+
+    prompt_ids, prompt_mask = padded(prompts, "left")
+    response_ids, response_mask = padded(answers, "right")
+    data = DataProto.from_dict(
+        tensors={"prompts": prompt_ids, "responses": response_ids,
+                 "attention_mask": torch.cat([prompt_mask, response_mask], dim=1)},
+        non_tensors={"data_source": ["sartco"] * len(rows),
+                     "reward_model": [{"ground_truth": r["episode"]} for r in rows],
+                     "extra_info": [{"id": r["id"]} for r in rows]})
+    if manager == "naive":
+        rewards = NaiveRewardManager(tokenizer, num_examine=0, compute_score=compute_score)(data)
+    else:
+        rewards = BatchRewardManager(tokenizer, num_examine=0, compute_score=compute_score_batch)(data)
+    last = response_mask.sum(dim=1) - 1
+    got = [float(rewards[i, last[i]]) for i in range(len(rows))]
+    assert got == [float(k % 2) for k in range(len(rows))]
+    assert float(rewards.sum()) == sum(got)  # nothing anywhere else
