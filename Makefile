@@ -5,7 +5,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 RESULTS ?= results
 
-.PHONY: install main test lint local clean-results
+.PHONY: install main test test-train lint local clean-results
 
 $(STAMP): pyproject.toml setup.py
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -23,6 +23,16 @@ main: $(STAMP)
 ## Unit, property and end-to-end tests.
 test: $(STAMP)
 	$(BIN)/python -m pytest
+
+## The trainers' interfaces against the real libraries: one GRPO step of a tiny model on CPU, verl's
+## reward managers (the `train` extra: torch's CPU build, trl, verl; see the README for its size).
+TRAIN_STAMP := $(VENV)/.installed-train
+$(TRAIN_STAMP): $(STAMP)
+	$(BIN)/python -m pip install -q -e ".[dev,train]"
+	touch $(TRAIN_STAMP)
+
+test-train: $(TRAIN_STAMP)
+	SARTCO_REQUIRE_TRAIN=1 $(BIN)/python -m pytest -m train tests/reward/test_trainers.py
 
 ## ruff with the rules of pyproject.toml ([tool.ruff]); CI runs it before the tests.
 lint: $(STAMP)

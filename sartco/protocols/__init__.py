@@ -76,23 +76,30 @@ def our_episodes(data: Path | None) -> list[dict]:
     present = [folder / name for name in INSTANCE_FILES if (folder / name).is_file()]
     if not present:
         raise UserError(f"{folder}: no {INSTANCE_FILES[0]} (give cobot_instruct's in/ folder with --data)")
-    out = []
-    for path in present:
-        try:
-            experiments = json.loads(path.read_text(encoding="utf-8"))["experiments"]
-            for experiment in experiments:
-                for instance in experiment["game_instances"]:
-                    out.append(our_episode(experiment["name"], instance))
-        except (OSError, ValueError, KeyError, TypeError, IndexError) as exc:
-            raise UserError(f"{path}: not a cobot_instruct instance file ({type(exc).__name__}: {exc})") from None
-    return out
+    return [episode for path in present for episode in file_episodes(path)]
+
+
+def file_episodes(path: Path) -> list[dict]:
+    """Every episode of one cobot_instruct instance file (our protocol), as `our_episode`; a
+    UserError naming the file when it cannot be read as one."""
+    try:
+        experiments = json.loads(Path(path).read_text(encoding="utf-8"))["experiments"]
+        return [our_episode(experiment["name"], instance)
+                for experiment in experiments for instance in experiment["game_instances"]]
+    except (OSError, ValueError, KeyError, TypeError, IndexError) as exc:
+        raise UserError(f"{path}: not a cobot_instruct instance file ({type(exc).__name__}: {exc})") from None
 
 
 def our_episode(experiment: str, instance: dict) -> dict:
     messages = list(instance["turns"])  # what the Builder receives per turn (the first holds the whole prompt)
     sample, variant = instance["board_id"], instance["task"]
-    return {"id": f"{experiment}/{sample}/{variant}", "protocol": OUR_PROTOCOL, "file": experiment,
+    return {"id": episode_id(experiment, instance), "protocol": OUR_PROTOCOL, "file": experiment,
             "sample": sample, "variant": variant, "messages": messages, "instance": instance}
+
+
+def episode_id(experiment: str, instance: dict) -> str:
+    """An episode's id in our protocol: "<experiment>/<board id>/<task>"."""
+    return f"{experiment}/{instance['board_id']}/{instance['task']}"
 
 
 def write_lines(items: Iterable[dict]) -> int:

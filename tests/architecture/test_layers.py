@@ -30,6 +30,8 @@ LAYERS = [
     # the files clemcore loads by path (backends/<name>_api.py; `sartco register` copies them)
     ("clem backends", ["sartco.clem.backends"]),
     ("protocols", ["sartco.protocols"]),
+    # rewards for RL trainers over our protocol's episodes (ids of sartco.protocols)
+    ("reward", ["sartco.reward"]),
     ("top", ["sartco.report", "sartco.instancegen", "sartco.cli", "sartco.__main__", "sartco.bench_execute", "games", "tools"]),
 ]
 TOP = len(LAYERS) - 1  # the entry points may use each other (the `sartco` command dispatches to them)

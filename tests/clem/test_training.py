@@ -7,6 +7,7 @@ from pathlib import Path
 import pytest
 
 from play_helpers import REPO
+from sartco.clem.core.building import CONTEXT_KEY
 from sartco.clem.instruct.training import gym_env
 from sartco.instancegen.command import generate
 from sartco.instancegen.options import DEFAULTS
@@ -90,6 +91,8 @@ def test_gym_env_with_a_scripted_policy(train_file, reward):
             assert all(i == {} for i in infos[:-1]) and all(x == 0.0 for x in rewards[:-1])
             final = infos[-1]
             assert set(final) >= {"es", "cell_f1", "error_category", "puts"}
+            # the last observation carries the same scores (what clem serve passes on: sartco.clem.core.building)
+            assert observation[CONTEXT_KEY] == {k: final[k] for k in ("es", "cell_f1", "error_category", "puts")}
             if policy == "gold":
                 assert (final["es"], final["cell_f1"], final["error_category"]) == (1, 1.0, "success")
                 assert rewards[-1] == 1.0 and final["puts"] > 0

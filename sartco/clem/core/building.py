@@ -32,6 +32,9 @@ ATTEMPT_PICTURE = "boards_{}.svg"   # attempt 1, 2, ... (every episode has attem
 PICTURE_ALT = "target (left) and built board (right); differing cells framed; a stack's pieces bottom to top"
 # what the last step of an episode puts into clemcore's step info (the gym env's `info`): info key -> record field
 INFO_FIELDS = {"es": "es", "cell_f1": "f1", "error_category": "category", "puts": "puts"}
+# the same facts, under this key, in every player's context after the final build: the observation a
+# trainer gets at the episode's end (clem serve's OpenEnv serialisation keeps the context and drops info)
+CONTEXT_KEY = "sartco_scores"
 
 
 @dataclass(frozen=True, slots=True)
@@ -98,26 +101,56 @@ def compose_program(builder_code: str, *, given_code: str = "", rows: int = DEFA
     return "\n".join(parts) + "\n"
 
 
+@dataclass(frozen=True, slots=True)
+class BuildJob:
+    """One build to run: the builder's code on a fresh board of the episode, against its target."""
+    builder_code: str
+    target: dict
+    given_code: str = ""
+    rows: int = DEFAULT_ROWS
+    cols: int = DEFAULT_COLS
+    turn_codes: list[str] | None = None
+
+
 def build(builder_code: str, target: dict, *, given_code: str = "", rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS,
           turn_codes: list[str] | None = None) -> BuildRecord:
     """Execute the builder's code (escaped: see the module's docstring) on a fresh board and
     compare it with the target."""
-    from sartco.program import execute, judge  # the only place model-written code runs
+    return build_many([BuildJob(builder_code, target, given_code, rows, cols, turn_codes)])[0]
 
-    builder_code, given_code = escape(builder_code), escape(given_code)
-    turn_codes = [escape(code) for code in turn_codes] if turn_codes else [builder_code]
-    program = compose_program(builder_code, given_code=given_code, rows=rows, cols=cols)
-    ex = execute(program, rows=rows, cols=cols)
-    cmp = judge(ex.ok, ex.error, ex.cells, target)
-    error = None if ex.error is None else str(ErrorCode(ex.error))  # sartco.program: set whenever not ok
-    es = int(cmp.es)
-    category = SUCCESS_CATEGORY if es else str(ErrorCode(cmp.category))  # the error unless the program ran
-    return BuildRecord(
-        builder_code=builder_code, program=program, ok=bool(ex.ok), error=error, message=escape(ex.message or ""),
-        cells=ex.cells, target=target, puts=int(ex.puts), es=es, category=category,
-        precision=float(cmp.precision), recall=float(cmp.recall), f1=float(cmp.f1),
-        rows=rows, cols=cols, turn_codes=turn_codes,
-    )
+
+def build_many(jobs: list[BuildJob]) -> list[BuildRecord]:
+    """`build` of many jobs, in input order: one sandbox batch per board size (sartco.clem.core.sandbox)."""
+    from .sandbox import judge, run_many
+
+    jobs = [BuildJob(escape(j.builder_code), j.target, escape(j.given_code), j.rows, j.cols,
+                     [escape(code) for code in j.turn_codes] if j.turn_codes else None) for j in jobs]
+    programs = [compose_program(j.builder_code, given_code=j.given_code, rows=j.rows, cols=j.cols) for j in jobs]
+    executions: list = [None] * len(jobs)
+    for (rows, cols), indices in _by_size(jobs).items():
+        for i, ex in zip(indices, run_many([programs[i] for i in indices], rows, cols)):
+            executions[i] = ex
+    out = []
+    for job, program, ex in zip(jobs, programs, executions):
+        cmp = judge(ex.ok, ex.error, ex.cells, job.target)
+        error = None if ex.error is None else str(ErrorCode(ex.error))  # sartco.program: set whenever not ok
+        es = int(cmp.es)
+        category = SUCCESS_CATEGORY if es else str(ErrorCode(cmp.category))  # the error unless the program ran
+        out.append(BuildRecord(
+            builder_code=job.builder_code, program=program, ok=bool(ex.ok), error=error, message=escape(ex.message or ""),
+            cells=ex.cells, target=job.target, puts=int(ex.puts), es=es, category=category,
+            precision=float(cmp.precision), recall=float(cmp.recall), f1=float(cmp.f1),
+            rows=job.rows, cols=job.cols, turn_codes=list(job.turn_codes or [job.builder_code]),
+        ))
+    return out
+
+
+def _by_size(jobs) -> dict[tuple[int, int], list[int]]:
+    """The positions of the jobs per board size (rows, cols), in input order."""
+    sizes: dict[tuple[int, int], list[int]] = {}
+    for i, job in enumerate(jobs):
+        sizes.setdefault((job.rows, job.cols), []).append(i)
+    return sizes
 
 
 def parse_failure(target: dict, message: str, *, turn_codes: list[str] | None = None,
@@ -139,8 +172,13 @@ def build_for(instance: dict, builder_code: str, turn_codes: list[str] | None = 
     record = build(builder_code, instance["target"], given_code=instance["given_code"],
                    rows=instance["rows"], cols=instance["cols"], turn_codes=turn_codes)
     if record.error == ErrorCode.HARNESS_ERROR:
-        raise HarnessFault(f"sandbox: {record.message}")
+        raise sandbox_fault(record)
     return record
+
+
+def sandbox_fault(record: BuildRecord) -> HarnessFault:
+    """The harness fault of a build the sandbox could not run (category harness_error)."""
+    return HarnessFault(f"sandbox: {record.message}")
 
 
 def parse_failure_for(instance: dict, message: str, turn_codes: list[str] | None = None,
@@ -152,16 +190,36 @@ def parse_failure_for(instance: dict, message: str, turn_codes: list[str] | None
 
 def build_answers(instance: dict, answers: list[str]) -> BuildRecord:
     """Our build of a dialogue's answers: the code sartco.clem.core.parsing finds in each, joined and run
-    once; the first answer without code makes it a parse failure (nothing executed)."""
+    once; the first answer without code makes it a parse failure (nothing executed). HarnessFault
+    when the sandbox failed."""
+    record = build_answers_many([(instance, answers)])[0]
+    if record.error == ErrorCode.HARNESS_ERROR:
+        raise sandbox_fault(record)
+    return record
+
+
+def build_answers_many(items: list[tuple[dict, list[str]]]) -> list[BuildRecord]:
+    """`build_answers` of many (instance, answers) pairs in one sandbox batch per board size, in
+    input order; a build the sandbox failed is returned as its harness_error record, not raised."""
     from .parsing import ParseError, parse_code
 
-    codes = []
-    for answer in answers:
-        try:
-            codes.append(parse_code(answer))
-        except ParseError as error:
-            return parse_failure_for(instance, error.reason or "no code found", turn_codes=codes)
-    return build_for(instance, "\n".join(codes), turn_codes=codes)
+    out: list[BuildRecord | None] = [None] * len(items)
+    jobs, places = [], []
+    for k, (instance, answers) in enumerate(items):
+        codes = []
+        for answer in answers:
+            try:
+                codes.append(parse_code(answer))
+            except ParseError as error:
+                out[k] = parse_failure_for(instance, error.reason or "no code found", turn_codes=codes)
+                break
+        else:
+            jobs.append(BuildJob("\n".join(codes), instance["target"], instance["given_code"], instance["rows"],
+                                 instance["cols"], codes))
+            places.append(k)
+    for k, record in zip(places, build_many(jobs)):
+        out[k] = record
+    return out
 
 
 def record_build(game_master, attempts: list[BuildRecord], *, final: bool, shown: bool = False,
@@ -178,7 +236,8 @@ def record_build(game_master, attempts: list[BuildRecord], *, final: bool, shown
     its function (with the episode's `instance`, sartco.clem.core.probes), move the game state to
     the outcome of the attempts (or, for the paper protocol, to the `share` of turns that succeeded)
     and hand ES, cell F1, category and puts to clemcore's step info (what a gym env's `info` and
-    reward function see, sartco.clem.instruct.training)."""
+    reward function see, sartco.clem.instruct.training) and, under CONTEXT_KEY, to every player's
+    context (the observation at the episode's end, also over `clem serve`; its text unchanged)."""
     from .probes import log_probes
 
     record = attempts[-1]
@@ -197,4 +256,10 @@ def record_build(game_master, attempts: list[BuildRecord], *, final: bool, shown
         set_attempts_outcome(game_master.state, [a.category for a in attempts])
     else:
         set_share_outcome(game_master.state, share)
-    game_master.info.update({key: getattr(record, name) for key, name in INFO_FIELDS.items()})
+    facts = {key: getattr(record, name) for key, name in INFO_FIELDS.items()}
+    game_master.info.update(facts)
+    for player in game_master.get_players():
+        context = game_master.get_context_for(player)
+        if context is not None:  # a player who got no turn observes clemcore's "the game ended" text
+            extras = {key: value for key, value in context.items() if key not in ("role", "content")}
+            game_master.set_context_for(player, context["content"], **{**extras, CONTEXT_KEY: dict(facts)})

@@ -24,7 +24,7 @@ without error, no piece lies directly on a piece of its colour, and its board di
 episode's target (so never the episode's own arguments) and from the kept ones. K (instance
 field `probes`, default DEFAULT_PROBES; 0 turns the probes off), the first kept in draw order,
 from rounds of CANDIDATES x K candidates (ROUNDS at most). Every program runs in the sandbox
-(sartco.program.execute_many): one batch per round of gold candidates (mostly one), one for the
+(sartco.clem.core.sandbox.run_many): one batch per round of gold candidates (mostly one), one for the
 K probes; a harness_error raises HarnessFault.
 
 sequence_function episodes are not probed: their gold function (and the prompt's examples)
@@ -35,6 +35,7 @@ from __future__ import annotations
 
 import ast
 import random
+from dataclasses import dataclass
 
 from sartco import settings
 from sartco.episode import PROBES_KEY
@@ -123,7 +124,7 @@ def _plain_colours(cells: dict) -> bool:
 def draw_arguments(instance: dict, gold: str, name: str, k: int, seed: int = PROBE_SEED) -> list[tuple[dict, dict]]:
     """Up to k (arguments, gold board) pairs (module doc), the same for a seed on every run:
     rounds of CANDIDATES x k candidates, one sandbox batch each, until k are kept (ROUNDS at most)."""
-    from sartco.program import execute_many
+    from .sandbox import run_many
 
     rows, cols, n = instance["rows"], instance["cols"], len(combo_of(instance))
     rng = random.Random(f"{seed}/{instance['board_id']}/{instance['task']}")
@@ -131,8 +132,8 @@ def draw_arguments(instance: dict, gold: str, name: str, k: int, seed: int = PRO
     for _ in range(ROUNDS):
         candidates = [{"colors": [rng.choice(COLORS) for _ in range(n)], "x": rng.randrange(rows),
                        "y": rng.randrange(cols)} for _ in range(CANDIDATES * k)]
-        runs = execute_many([probe_program(gold, name, a, given_code=instance["given_code"], rows=rows, cols=cols)
-                             for a in candidates], rows, cols)
+        runs = run_many([probe_program(gold, name, a, given_code=instance["given_code"], rows=rows, cols=cols)
+                         for a in candidates], rows, cols)
         for args, ex in zip(candidates, runs):
             if ex.error == ErrorCode.HARNESS_ERROR:
                 raise HarnessFault(f"sandbox (gold probe): {ex.message}")
@@ -144,32 +145,64 @@ def draw_arguments(instance: dict, gold: str, name: str, k: int, seed: int = PRO
     return kept
 
 
+@dataclass(frozen=True, slots=True)
+class GoldDraws:
+    """What an episode's probes compare with (the same for every answer): the gold function's name
+    and the (arguments, gold board) pairs of `draw_arguments`."""
+    function: str
+    draws: list
+
+
+def gold_draws(instance: dict, seed: int = PROBE_SEED) -> GoldDraws:
+    """The episode's gold function and draws; HarnessFault when the gold program calls no function."""
+    gold_name = probed_function(instance["gold_code"], instance["given_code"])
+    if gold_name is None:
+        raise HarnessFault("probes: the gold program calls no function")
+    k = int(instance.get("probes", DEFAULT_PROBES))
+    return GoldDraws(gold_name, draw_arguments(instance, instance["gold_code"], gold_name, k, seed))
+
+
 def run_probes(instance: dict, code: str, seed: int = PROBE_SEED) -> dict:
     """The probes of one answer: {"function", "source", "gold_function", "probes": [{"colors", "x",
     "y", "category", "message"}], "share"} (share: probes built exactly / probes)."""
-    from sartco.program import execute_many, judge
+    result = run_probes_many([(instance, code, gold_draws(instance, seed))])[0]
+    if isinstance(result, HarnessFault):
+        raise result
+    return result
 
-    given, rows, cols = instance["given_code"], instance["rows"], instance["cols"]
-    k = int(instance.get("probes", DEFAULT_PROBES))
-    gold_name = probed_function(instance["gold_code"], given)
-    if gold_name is None:
-        raise HarnessFault("probes: the gold program calls no function")
-    draws = draw_arguments(instance, instance["gold_code"], gold_name, k, seed)
-    name = probed_function(code, given)
-    source = None if name is None else ("model" if name in _top_defs(_parse(code)) else "given")
-    probes = [{**args, "category": NO_FUNCTION, "message": "the answer calls no function"} for args, _ in draws]
-    if name is not None:
-        runs = execute_many([probe_program(code, name, a, given_code=given, rows=rows, cols=cols)
-                             for a, _ in draws], rows, cols)
-        for probe, (_, gold_cells), ex in zip(probes, draws, runs):
-            if ex.error == ErrorCode.HARNESS_ERROR:
-                raise HarnessFault(f"sandbox (probe): {ex.message}")
+
+def run_probes_many(jobs: list[tuple[dict, str, GoldDraws]]) -> list[dict | HarnessFault]:
+    """`run_probes` of many (instance, answer code, gold draws) in one sandbox batch per board
+    size, in input order; an answer whose probe the sandbox failed gets its HarnessFault."""
+    from .sandbox import judge, run_many
+
+    plans, batches = [], {}
+    for instance, code, gold in jobs:
+        given, rows, cols = instance["given_code"], instance["rows"], instance["cols"]
+        name = probed_function(code, given)
+        programs = [] if name is None else [probe_program(code, name, a, given_code=given, rows=rows, cols=cols)
+                                            for a, _ in gold.draws]
+        batch = batches.setdefault((rows, cols), [])
+        plans.append((name, len(batch), len(programs)))
+        batch.extend(programs)
+    runs = {size: run_many(programs, *size) for size, programs in batches.items()}
+    out: list[dict | HarnessFault] = []
+    for (instance, code, gold), (name, start, n) in zip(jobs, plans):
+        source = None if name is None else ("model" if name in _top_defs(_parse(code)) else "given")
+        probes = [{**args, "category": NO_FUNCTION, "message": "the answer calls no function"} for args, _ in gold.draws]
+        executions = runs[(instance["rows"], instance["cols"])][start:start + n]
+        fault = next((ex for ex in executions if ex.error == ErrorCode.HARNESS_ERROR), None)
+        if fault is not None:
+            out.append(HarnessFault(f"sandbox (probe): {fault.message}"))
+            continue
+        for probe, (_, gold_cells), ex in zip(probes, gold.draws, executions):
             verdict = judge(ex.ok, ex.error, ex.cells, gold_cells)
             probe["category"] = SUCCESS_CATEGORY if verdict.es else str(ErrorCode(verdict.category))
             probe["message"] = ex.message or ""
-    built = sum(p["category"] == SUCCESS_CATEGORY for p in probes)
-    return {"function": name, "source": source, "gold_function": gold_name, "probes": probes,
-            "share": built / len(probes) if probes else None}
+        built = sum(p["category"] == SUCCESS_CATEGORY for p in probes)
+        out.append({"function": name, "source": source, "gold_function": gold.function, "probes": probes,
+                    "share": built / len(probes) if probes else None})
+    return out
 
 
 def log_probes(game_master, instance: dict, record) -> None:

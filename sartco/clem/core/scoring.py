@@ -48,6 +48,35 @@ from .probes import probed
 NAN = float("nan")
 
 
+# the order of a build's scores in scores.json
+SCORE_ORDER = (EXECUTION_SUCCESS, EXACT_MATCH, CODEBLEU, CELL_PRECISION, CELL_RECALL, CELL_F1, ERROR_CATEGORY,
+               ERROR_FAMILY, HARNESS_REASON, PUTS, metrics.BENCH_SCORE)
+
+
+def build_scores(record: BuildRecord | None, aborted: bool) -> dict:
+    """The scores of an episode's final build that need no gold code: Execution Success, cell
+    precision / recall / F1, Error Category and Family, Puts (and Harness Error); when the
+    episode was aborted (no record: no code was found) the numbers and Main Score are NaN."""
+    if aborted or record is None:
+        category = record.category if record else str(ErrorCode.PARSE_ERROR)
+        scores = {**dict.fromkeys(BUILD_SCORES, NAN), ERROR_CATEGORY: category, ERROR_FAMILY: category_family(category)}
+        if category == ErrorCode.HARNESS_ERROR:
+            scores[HARNESS_REASON] = record.message
+        return {**scores, PUTS: 0, metrics.BENCH_SCORE: NAN}
+    return {EXECUTION_SUCCESS: int(record.es), CELL_PRECISION: record.precision, CELL_RECALL: record.recall,
+            CELL_F1: record.f1, ERROR_CATEGORY: record.category, ERROR_FAMILY: record.family, PUTS: record.puts}
+
+
+def probe_scores(probes: dict | None) -> dict:
+    """Function Generalisation, Probe Categories, Probe Function of a probed episode from its
+    probes record (sartco.clem.core.probes.run_probes; None when aborted or nothing was probed:
+    FG NaN)."""
+    share = probes["share"] if probes else None
+    return {FUNCTION_GENERALISATION: NAN if share is None else float(share),
+            PROBE_CATEGORIES: CATEGORY_SEPARATOR.join(p["category"] for p in (probes or {}).get("probes", [])),
+            PROBE_FUNCTION: (probes or {}).get("source") or "none"}
+
+
 class BuildScorer(GameScorer):
     """The scores of an episode's recorded build, against the episode's gold code."""
 
@@ -70,46 +99,24 @@ class BuildScorer(GameScorer):
         data = interactions.get(BUILD_KEY)
         record = BuildRecord.from_json(data) if data else None
         self.log_attempt_scores(interactions, record, aborted)
-        self.log_probe_scores(interactions, aborted)
-        if aborted or record is None:
-            for name in BUILD_SCORES:
-                self.log_episode_score(name, NAN)
-            category = record.category if record else str(ErrorCode.PARSE_ERROR)
-            self.log_episode_score(ERROR_CATEGORY, category)
-            self.log_episode_score(ERROR_FAMILY, category_family(category))
-            if category == ErrorCode.HARNESS_ERROR:
-                self.log_episode_score(HARNESS_REASON, record.message)
-            self.log_episode_score(PUTS, 0)
-            self.log_episode_score(metrics.BENCH_SCORE, NAN)
-            return
-        gold = self.game_instance["gold_code"]
-        no_code = record.error == ErrorCode.PARSE_ERROR  # a feedback episode's last answer held no code
-        self.log_episode_score(EXECUTION_SUCCESS, int(record.es))
-        self.log_episode_score(EXACT_MATCH, 0 if no_code else int(exact_match(record.builder_code, gold)))
-        self.log_episode_score(CODEBLEU, 0.0 if no_code else float(code_bleu(record.builder_code, gold)))
-        self.log_episode_score(CELL_PRECISION, record.precision)
-        self.log_episode_score(CELL_RECALL, record.recall)
-        self.log_episode_score(CELL_F1, record.f1)
-        self.log_episode_score(ERROR_CATEGORY, record.category)
-        self.log_episode_score(ERROR_FAMILY, record.family)
-        self.log_episode_score(PUTS, record.puts)
-        self.log_episode_score(metrics.BENCH_SCORE, self.bench_score(interactions, record))
+        if probed(self.game_instance):
+            self.log_scores(probe_scores(None if aborted else interactions.get(PROBES_KEY)))
+        scores = build_scores(record, aborted)
+        if not (aborted or record is None):
+            gold = self.game_instance["gold_code"]
+            no_code = record.error == ErrorCode.PARSE_ERROR  # a feedback episode's last answer held no code
+            scores[EXACT_MATCH] = 0 if no_code else int(exact_match(record.builder_code, gold))
+            scores[CODEBLEU] = 0.0 if no_code else float(code_bleu(record.builder_code, gold))
+            scores[metrics.BENCH_SCORE] = self.bench_score(interactions, record)
+        self.log_scores({name: scores[name] for name in SCORE_ORDER if name in scores})
 
     def bench_score(self, interactions: dict, record: BuildRecord) -> float:
         """Main Score of a played episode: 100 x execution success of the build."""
         return 100.0 * record.es
 
-    def log_probe_scores(self, interactions: dict, aborted: bool) -> None:
-        """Function Generalisation, Probe Categories, Probe Function - probed episodes only
-        (sartco.clem.core.probes); FG is NaN when the episode was aborted or nothing was probed."""
-        if not probed(self.game_instance):
-            return
-        probes = None if aborted else interactions.get(PROBES_KEY)
-        share = probes["share"] if probes else None
-        self.log_episode_score(FUNCTION_GENERALISATION, NAN if share is None else float(share))
-        self.log_episode_score(PROBE_CATEGORIES, CATEGORY_SEPARATOR.join(
-            p["category"] for p in (probes or {}).get("probes", [])))
-        self.log_episode_score(PROBE_FUNCTION, (probes or {}).get("source") or "none")
+    def log_scores(self, scores: dict) -> None:
+        for name, value in scores.items():
+            self.log_episode_score(name, value)
 
     def log_attempt_scores(self, interactions: dict, final: BuildRecord | None, aborted: bool) -> None:
         """ES@1, ES@N, Attempts, Max Attempts, Attempt Categories - only in feedback experiments

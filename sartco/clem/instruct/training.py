@@ -10,6 +10,10 @@ What a step gives (clemcore's GameMasterEnv; observation = the builder's context
           an ErrorCode value, a mismatch category or "parse_error") and `puts` of the final build
           (sartco.clem.core.building.record_build); {} at the other steps (the next instruction of a
           multi-turn episode, the feedback after a failed attempt)
+  observation  at the episode's last step the builder's context carries the same four facts under
+          "sartco_scores" (sartco.clem.core.building.CONTEXT_KEY), its text unchanged: `clem serve`
+          (clemcore's OpenEnv server) sends the observation's context and drops `info`, so a
+          trainer reads the scores of a served episode there
   reward  REWARDS[name](observation, action, state, info):
           "es"       (default) execution success of the final build: 1.0 when the built board
                      equals the target, else 0.0 (no code, an error, a wrong board); 0.0 before

@@ -1,0 +1,21 @@
+"""The game core's one door into the sandbox: every program a build (sartco.clem.core.building)
+or a function probe (sartco.clem.core.probes) runs goes through `run_many`, one batch of programs
+on fresh boards of one size, in the sandbox in use (sartco.program.current(): the local one, or
+whatever `sartco.program.use` put in use, e.g. sartco.program.cluster.RaySandbox), and every
+verdict through `judge`.
+"""
+from __future__ import annotations
+
+from sartco.program import Execution, current, judge
+
+__all__ = ["run_many", "judge", "restart"]
+
+
+def run_many(programs: list[str], rows: int, cols: int) -> list[Execution]:
+    """Each program on its own fresh rows x cols board, results in input order."""
+    return current().execute_many(programs, rows, cols) if programs else []
+
+
+def restart() -> None:
+    """Close the sandbox in use (a local one starts fresh templates on the next call)."""
+    current().close()
