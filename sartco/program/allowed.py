@@ -13,8 +13,10 @@ from __future__ import annotations
 import ast
 import builtins
 
-from .attributes import NAMES
+from .attributes import OFFERED, RECORD_NAMES, TYPES
 from .classes import EXCEPTIONS
+from .methods import METHODS
+from .modules import MEMBERS
 
 ALLOWED_BUILTINS = frozenset(
     "range zip enumerate len min max abs sum sorted reversed any all round divmod "
@@ -23,7 +25,8 @@ ALLOWED_BUILTINS = frozenset(
 ) | EXCEPTIONS
 PROVIDED = frozenset({"put", "init_board"})  # `board` is provided too, but may be rebound
 DENIED = frozenset(dir(builtins)) - ALLOWED_BUILTINS - {"True", "False", "None", "Ellipsis", "NotImplemented", "__name__"}
-ATTRIBUTES = NAMES  # every attribute name the sandbox offers (a program may also read the names it defines)
+# every attribute name the sandbox offers (a program may also read the names it defines)
+ATTRIBUTES = METHODS.union(*MEMBERS.values(), *TYPES.values(), RECORD_NAMES, OFFERED)
 
 
 # the fields of each allowed node type that hold child nodes; a type not listed is forbidden

@@ -6,15 +6,13 @@ Any future stand-in that reads attributes by name (functools.wraps' `assigned`/`
 reads them through `read`."""
 from __future__ import annotations
 
+from .attributes import read as attribute
 from .budget import Forbidden
+from .classes import READABLE
 
 
 def read(obj, name):
     """`obj.name` for a name given as a string (dotted names as attrgetter takes them)."""
-    # imported here: attributes.py imports the stand-in modules that use this one
-    from .attributes import read as attribute
-    from .classes import READABLE
-
     if type(name) is not str:
         raise TypeError(f"attribute name must be a str, not {type(name).__name__}")
     for part in name.split("."):
