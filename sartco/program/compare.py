@@ -21,7 +21,6 @@ from dataclasses import dataclass
 
 from sartco.world import ErrorCode, parse_key
 
-E = ErrorCode
 
 
 @dataclass(frozen=True, slots=True)
@@ -43,19 +42,19 @@ def _category(built: dict, target: dict) -> ErrorCode | None:
     for key in sorted(target, key=parse_key):
         want, got = target[key], built.get(key)
         if got is None:
-            return E.MISMATCH_LOCATION
+            return ErrorCode.MISMATCH_LOCATION
         if got == want:
             continue
         if len(got) != len(want):
-            return E.MISMATCH_COUNT
+            return ErrorCode.MISMATCH_COUNT
         shapes_got, shapes_want = [p[0] for p in got], [p[0] for p in want]
         if sorted(shapes_got) != sorted(shapes_want):
-            return E.MISMATCH_SHAPE
+            return ErrorCode.MISMATCH_SHAPE
         if shapes_got != shapes_want:
-            return E.MISMATCH_ORDER
-        return E.MISMATCH_COLOR
+            return ErrorCode.MISMATCH_ORDER
+        return ErrorCode.MISMATCH_COLOR
     if any(key not in target for key in built):
-        return E.MISMATCH_LOCATION
+        return ErrorCode.MISMATCH_LOCATION
     return None
 
 

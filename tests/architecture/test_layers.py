@@ -4,6 +4,7 @@ never up, and no two packages import each other."""
 from __future__ import annotations
 
 import ast
+import re
 from pathlib import Path
 
 import pytest
@@ -190,3 +191,13 @@ def test_largest_module_is_small():
                    reverse=True)
     big = [f"{p}: {n} lines" for n, p in sizes if n >= 300]
     assert not big, "modules of 300 lines or more:\n" + "\n".join(big)
+
+
+def test_named_test_files_exist():
+    """A test file the code or the docs name (`tests/.../test_x.py`) is there: none goes stale
+    when tests move."""
+    named = re.compile(r"\btests/[\w/]+\.py\b")
+    texts = [path for _, path in modules()] + sorted((ROOT / "docs").glob("*.md")) + [ROOT / "README.md"]
+    stale = [f"{path.relative_to(ROOT)}: {name}" for path in texts
+             for name in sorted(set(named.findall(path.read_text(encoding="utf-8")))) if not (ROOT / name).is_file()]
+    assert not stale, "test files named but missing:\n" + "\n".join(stale)
