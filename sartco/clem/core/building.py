@@ -13,7 +13,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field, fields
 
 from sartco.episode import BUILD_KEY
-from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, SUCCESS_CATEGORY, ErrorCode, category_family
+from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, SUCCESS_CATEGORY, Category, ErrorCode, category_family, category_of
 from sartco.world.render import diff_svg, differing_cells
 
 from .outcomes import HarnessFault, set_attempts_outcome, set_share_outcome
@@ -32,13 +32,13 @@ class BuildRecord:
     builder_code: str                 # what the builder wrote (all turns joined)
     program: str                      # what was executed: init_board + given code + builder code
     ok: bool                          # the program ran to the end
-    error: str | None                 # ErrorCode value when the program failed (or parse_error)
+    error: ErrorCode | None           # when the program failed (or parse_error, harness_error)
     message: str
     cells: dict                       # the board built (so far, when the program failed)
     target: dict
     puts: int
     es: int                           # 1 when cells == target and ok
-    category: str                     # error, mismatch category, or "success"
+    category: Category                # the error, the mismatch category, or SUCCESS_CATEGORY
     precision: float
     recall: float
     f1: float
@@ -48,7 +48,9 @@ class BuildRecord:
 
     def to_json(self) -> dict:
         """The record as JSON data: a copy with fresh lists for the boards' stacks, as
-        dataclasses.asdict makes it, at a tenth of its cost (every build of every episode is recorded)."""
+        dataclasses.asdict makes it, at a tenth of its cost (every build of every episode is
+        recorded); `error` and `category` stay members of str enums, which JSON writes as their
+        strings."""
         data = {f.name: getattr(self, f.name) for f in fields(self)}
         for board in ("cells", "target"):
             data[board] = {key: [list(piece) for piece in stack] for key, stack in data[board].items()}
@@ -62,7 +64,10 @@ class BuildRecord:
     @classmethod
     def from_json(cls, data: dict) -> "BuildRecord":
         names = {f.name for f in fields(cls)}
-        return cls(**{k: v for k, v in data.items() if k in names})
+        values = {k: v for k, v in data.items() if k in names}
+        values["error"] = None if values.get("error") is None else ErrorCode(values["error"])
+        values["category"] = category_of(values["category"])
+        return cls(**values)
 
     @property
     def family(self) -> str:
@@ -99,9 +104,9 @@ def build(builder_code: str, target: dict, *, given_code: str = "", rows: int = 
     program = compose_program(builder_code, given_code=given_code, rows=rows, cols=cols)
     ex = execute(program, rows=rows, cols=cols)
     cmp = judge(ex.ok, ex.error, ex.cells, target)
-    error = None if ex.error is None else str(ErrorCode(ex.error))  # sartco.program: set whenever not ok
+    error = None if ex.error is None else ErrorCode(ex.error)  # sartco.program: set whenever not ok
     es = int(cmp.es)
-    category = SUCCESS_CATEGORY if es else str(ErrorCode(cmp.category))  # the error unless the program ran
+    category: Category = SUCCESS_CATEGORY if es else ErrorCode(cmp.category)  # the error unless the program ran
     return BuildRecord(
         builder_code=builder_code, program=program, ok=bool(ex.ok), error=error, message=ex.message or "",
         cells=ex.cells, target=target, puts=int(ex.puts), es=es, category=category,
@@ -117,8 +122,8 @@ def parse_failure(target: dict, message: str, *, turn_codes: list[str] | None = 
     error=HARNESS_ERROR, because the harness failed): nothing was executed."""
     code = "\n".join(turn_codes or [])
     return BuildRecord(
-        builder_code=code, program="", ok=False, error=str(error), message=message,
-        cells={}, target=target, puts=0, es=0, category=str(error),
+        builder_code=code, program="", ok=False, error=error, message=message,
+        cells={}, target=target, puts=0, es=0, category=error,
         precision=0.0, recall=0.0, f1=0.0, rows=rows, cols=cols, turn_codes=list(turn_codes or []),
     )
 
