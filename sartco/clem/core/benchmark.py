@@ -40,6 +40,7 @@ import json
 import os
 import sys
 import typing
+from typing import Any
 
 from pathlib import Path
 
@@ -185,8 +186,10 @@ def start_run(game_spec: GameSpec, run: RunOptions, fields) -> provenance.RunRec
     except InstanceFileError as error:
         print(f"{'sartco resume' if resuming else 'clem run'} -g {game_spec.game_name}: {error}", file=sys.stderr)
         raise SystemExit(2) from None
-    return provenance.RunRecorder(game_spec.game_name, run.results_dir, path, run.experiment,
-                                  run.resume_episodes if resuming else selected, resume=resuming)
+    if run.resume_episodes is not None:  # resume: the episodes it plays again, not the file's
+        selected = run.resume_episodes
+    return provenance.RunRecorder(game_spec.game_name, run.results_dir, Path(path), run.experiment, selected,
+                                  resume=resuming)
 
 
 def instance_file(game_spec) -> str:
@@ -198,7 +201,7 @@ def instance_file(game_spec) -> str:
 
 class BuildBenchmark:
     """The base of a game's GameBenchmark (see the module doc): `class X(BuildBenchmark, GameBenchmark)`."""
-    master_class: type  # a DialogueGameMaster subclass: (game_spec, experiment, player_models); its
+    master_class: Any   # a DialogueGameMaster subclass: (game_spec, experiment, player_models); its
                         # `scorer_class`: a GameScorer subclass (game_name, experiment, game_instance)
     episode_fields: dict[str, type] = EPISODE_FIELDS  # field -> JSON type every episode must have
     game_spec: GameSpec  # set by GameBenchmark, the other base

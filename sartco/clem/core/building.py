@@ -106,7 +106,11 @@ def build(builder_code: str, target: dict, *, given_code: str = "", rows: int = 
     cmp = judge(ex.ok, ex.error, ex.cells, target)
     error = None if ex.error is None else ErrorCode(ex.error)  # sartco.program: set whenever not ok
     es = int(cmp.es)
-    category: Category = SUCCESS_CATEGORY if es else ErrorCode(cmp.category)  # the error unless the program ran
+    category: Category = SUCCESS_CATEGORY  # the error unless the program built the target
+    if not es:
+        if cmp.category is None:
+            raise ValueError("sartco.program.judge: a failed build without a category")
+        category = ErrorCode(cmp.category)
     return BuildRecord(
         builder_code=builder_code, program=program, ok=bool(ex.ok), error=error, message=ex.message or "",
         cells=ex.cells, target=target, puts=int(ex.puts), es=es, category=category,
