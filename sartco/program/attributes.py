@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import itertools
 import types
+from typing import Any
 
 from .arrays import ARRAY_NAMES, ndarray
 from .budget import Forbidden
@@ -75,7 +76,7 @@ def _unbound(real: type, name: str):
     return method
 
 
-def read(obj, name: str):
+def read(obj: Any, name: str) -> Any:
     """`obj.name` in a program (`$attr`)."""
     t = type(obj)
     allowed = TYPE_METHODS.get(t)

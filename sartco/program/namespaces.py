@@ -23,7 +23,8 @@ from __future__ import annotations
 import re as _re
 
 from .budget import Forbidden
-from .modules import REFUSED, Module, load
+from .modules import REFUSED, load
+from .standin import Module
 
 MODULE_NAME = "cocobots_scorer"
 
