@@ -21,6 +21,7 @@ functions are there and each refuses, naming why. The simulator's error classes 
 from __future__ import annotations
 
 import re as _re
+from typing import Any, NoReturn
 
 from .budget import Forbidden
 from .modules import REFUSED, load
@@ -37,17 +38,17 @@ class _RefusedFunction:
     def __init__(self, name: str):
         self.name = name
 
-    def __call__(self, *args, **kwargs):
+    def __call__(self, *args: object, **kwargs: object) -> NoReturn:
         raise Forbidden(f"{self.name} is not available in the sandbox: {REFUSED[self.name.partition('.')[0]]}")
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"<{self.name}: not available in the sandbox>"
 
 
 _RE = {name: _RefusedFunction(f"re.{name}") for name in _re.__all__ if name.islower()}
 
 
-def paper(env: dict, source: str) -> tuple[dict, dict]:
+def paper(env: dict[str, Any], source: str) -> tuple[dict[str, Any], dict[str, Any]]:
     """(globals, locals) of the authors' exec, from runtime.run's module namespace `env`
     (which loses `board`: it moves to the locals)."""
     board = env.pop("board")
