@@ -34,9 +34,11 @@ $(TRAIN_STAMP): $(STAMP)
 test-train: $(TRAIN_STAMP)
 	SARTCO_REQUIRE_TRAIN=1 $(BIN)/python -m pytest -m train tests/reward/test_trainers.py
 
-## ruff with the rules of pyproject.toml ([tool.ruff]); CI runs it before the tests.
+## ruff with the rules of pyproject.toml ([tool.ruff]), then mypy ([tool.mypy]) against
+## scripts/mypy-baseline.txt (scripts/typecheck.py); CI runs both before the tests.
 lint: $(STAMP)
 	$(BIN)/ruff check .
+	$(BIN)/python scripts/typecheck.py
 
 ## A real small model (Gemma 3 270M on a local llama.cpp server) over a slice of both games.
 local: $(STAMP)

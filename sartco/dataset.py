@@ -83,7 +83,7 @@ class BoardRecord(TypedDict):
     cols: int
     seed: str | None             # the object's code seed template
     arrangement: str | None      # regular boards: the arrangement template
-    placement: dict[str, list] | None   # simple boards: {"x", "y", "orientations"}, one per put
+    placement: dict[str, list[Any]] | None   # simple boards: {"x", "y", "orientations"}, one per put
     occupied_rows: int | None    # regular boards
     occupied_cols: int | None
     target: dict[str, list[list[str]]]  # the board the gold code builds, canonical cells

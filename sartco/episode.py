@@ -7,7 +7,7 @@ the scores by these names, and the tests build episodes with them; a field or a 
 here and nowhere else.
 """
 
-from typing import NotRequired, TypedDict
+from typing import Any, NotRequired, TypedDict
 
 # ---------------------------------------------------------------------------- scores.json names
 # every build episode (sartco.clem.core.scoring.BuildScorer); Main Score is clemcore's BENCH_SCORE
@@ -79,7 +79,7 @@ class PlayedEpisode(TypedDict):
     task: str              # sartco.dataset.TASKS
     rows: int
     cols: int
-    target: dict           # sartco.world.Board.to_json
+    target: dict[str, Any]  # sartco.world.Board.to_json
     given_code: str        # the code the program starts with (repetition: the object function)
     gold_code: str         # the gold answer in the task's style (exact match, CodeBLEU)
     # optional, written by no generator: answers `mock` gives verbatim, one per turn, instead of the
@@ -111,7 +111,7 @@ class DescribeEpisode(BuildEpisode):
     describer_prompt: str
     builder_prompt: str
     template_instruction: str
-    record: dict           # the board record (what `sartco import-instructions` reads back)
+    record: dict[str, Any]  # the board record (what `sartco import-instructions` reads back)
 
 
 class PaperProtocolEpisode(PlayedEpisode):
@@ -121,9 +121,9 @@ class PaperProtocolEpisode(PlayedEpisode):
     file: str              # the published file (stem) of the sample
     sample: str
     variant: str
-    cell: dict             # the Table 3 cell: board, object, task, source, instructions
+    cell: dict[str, Any]   # the Table 3 cell: board, object, task, source, instructions
     messages: list[str]    # the authors' user messages, one per turn
-    gold: list[dict]       # the authors' gold code of each turn
+    gold: list[dict[str, Any]]  # the authors' gold code of each turn
     given_function: str
     examples_from: str
     mock_answers: list[str]  # the gold in the authors' label format (what mock answers)
@@ -149,8 +149,8 @@ class _Feedback(TypedDict, total=False):
 
 class InstructExperiment(Experiment, _Feedback):
     """cobot_instruct's experiments (instancegenerator.py)."""
-    ablation: dict | None  # {"kind": "examples" | "without", "value"}; None in the Table 3 cells
-    dataset: dict          # the dataset's version, source, seed, path, generator seed, examples
+    ablation: dict[str, Any] | None  # {"kind": "examples" | "without", "value"}; None in the Table 3 cells
+    dataset: dict[str, Any]  # the dataset's version, source, seed, path, generator seed, examples
 
 
 # cobot_describe's modes (experiment field `mode`; sartco.clem.describe.dialogue plays them), in report order
@@ -180,4 +180,4 @@ class PaperExperiment(Experiment):
     file: str
     ablation: None
     examples_from: str
-    generation: dict       # the paper's generation settings (sartco.paper.table3.generation)
+    generation: dict[str, Any]  # the paper's generation settings (sartco.paper.table3.generation)

@@ -19,7 +19,7 @@ UNSAFE = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\x7f-\x9f\ud800-\udfff\u202a-\u2
 _BREAKS = re.compile("[\t\n\r]")
 
 
-def _visible(match: re.Match) -> str:
+def _visible(match: re.Match[str]) -> str:
     code = ord(match.group())
     return f"\\x{code:02x}" if code < 0x100 else f"\\u{code:04x}"
 
@@ -39,7 +39,7 @@ def exact_json(text: str) -> str | None:
     return None if escape(text) == text else json.dumps(text)
 
 
-def escape_all(value):
+def escape_all(value: object) -> object:
     """`escape` on every str inside nested dicts, lists and tuples (a record about to be stored)."""
     if isinstance(value, str):
         return escape(value)

@@ -30,10 +30,10 @@ a build, leaves the last board standing.
 """
 from __future__ import annotations
 
-from clemcore.clemgame import DialogueGameMaster, Player
+from clemcore.clemgame import DialogueGameMaster, GameBenchmark, Player
 from clemcore.clemgame.errors import ParseError
 
-from sartco.clem.core import benchmark
+from sartco.clem.core.benchmark import BuildBenchmark, json_fields
 from sartco.clem.core.building import BuildRecord, build_for, parse_failure_for, record_build
 from sartco.clem.core.card import ScoreCard
 from sartco.clem.core.harness import HarnessGuard
@@ -44,7 +44,7 @@ from sartco.clem.describe.dialogue import (DialogueScorer, answer_message, corre
                                            parse_builder_answer, parse_review, question_message, review_message,
                                            settings_of)
 from sartco.clem.describe.dialogue_answers import builder_answers, describer_answers
-from sartco.clem.describe.turns import BuilderTurn, Dialogue, DialogueLog, Move, State
+from sartco.clem.describe.turns import BuilderTurn, Dialogue, DialogueLog, Move, Said, State
 from sartco.clem.players.sourced import Builder
 from sartco.episode import ATTEMPTS_KEY, DIALOGUE_KEY, DescribeEpisode
 
@@ -67,41 +67,41 @@ class CobotDescribe(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameMas
 
     def _parse_response(self, player: Player, response: str):
         if player is self.builder:
-            return parse_builder_answer(response, self.settings, self.dialogue.log.count("question"))
+            return parse_builder_answer(response, self.settings, self.dialogue.log.count(Said.QUESTION))
         return DESCRIBER_PARSERS[self.dialogue.state](response)
 
     def _advance_game(self, player: Player, parsed):
-        e, d = self.episode, self.dialogue
+        episode, dialogue = self.episode, self.dialogue
         if player is self.builder:
             turn: BuilderTurn = parsed
             if turn.move is Move.QUESTION:
-                d.ask(turn.text)
+                dialogue.ask(turn.text)
                 self.set_context_for(self.describer, question_message(turn.text))
             else:
-                self._built(build_for(e, turn.text))
+                self._built(build_for(episode, turn.text))
             return
-        if d.state is State.INSTRUCTION:
-            d.instruct(parsed)
-            log_instruction(self, parsed, e["combo_name"])
-            self.set_context_for(self.builder, fill_builder_prompt(e["builder_prompt"], parsed))
-        elif d.state is State.ANSWER:
-            d.answer(parsed)
-            self.set_context_for(self.builder, answer_message(parsed, d.left("question")))
+        if dialogue.state is State.INSTRUCTION:
+            dialogue.instruct(parsed)
+            log_instruction(self, parsed, episode["combo_name"])
+            self.set_context_for(self.builder, fill_builder_prompt(episode["builder_prompt"], parsed))
+        elif dialogue.state is State.ANSWER:
+            dialogue.answer(parsed)
+            self.set_context_for(self.builder, answer_message(parsed, dialogue.left(Said.QUESTION)))
         elif parsed is None:  # the review says Done: the board stands
-            d.done()
+            dialogue.done()
             self._end()
         else:
-            d.correct(parsed)
-            self.set_context_for(self.builder, correction_message(parsed, d.left("question")))
+            dialogue.correct(parsed)
+            self.set_context_for(self.builder, correction_message(parsed, dialogue.left(Said.QUESTION)))
 
     def _built(self, record: BuildRecord):
         """A build (or a builder answer without code) is over: the describer reviews it while
         corrections are left, else the episode ends with it."""
-        d = self.dialogue
-        d.build(record)
-        record_build(self, d.builds, final=False)
-        if d.state is State.REVIEW:
-            self.set_context_for(self.describer, review_message(record, d.left("correction")))
+        dialogue = self.dialogue
+        dialogue.build(record)
+        record_build(self, dialogue.builds, final=False)
+        if dialogue.state is State.REVIEW:
+            self.set_context_for(self.describer, review_message(record, dialogue.left(Said.CORRECTION)))
         else:
             self._end()
 
@@ -110,18 +110,18 @@ class CobotDescribe(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameMas
         record_build(self, self.dialogue.builds, final=True, shown=True, instance=self.episode)
 
     def _on_parse_error(self, error: ParseError):
-        e, d = self.episode, self.dialogue
+        episode, dialogue = self.episode, self.dialogue
         role = self.current_player.game_role
         if self.current_player is self.builder:
-            self._built(parse_failure_for(e, f"{role}: {error.reason}"))
+            self._built(parse_failure_for(episode, f"{role}: {error.reason}"))
             return
-        if d.state is State.INSTRUCTION:
-            log_instruction(self, None, e["combo_name"], error=error.reason)
-        d.fail(error.reason)
-        if d.state is State.OVER:
+        if dialogue.state is State.INSTRUCTION:
+            log_instruction(self, None, episode["combo_name"], error=error.reason)
+        dialogue.fail(error.reason)
+        if dialogue.state is State.OVER:
             self._end()  # the board stands
         else:
-            self._built(parse_failure_for(e, f"{role}: {error.reason}"))
+            self._built(parse_failure_for(episode, f"{role}: {error.reason}"))
 
     def _on_after_game(self):
         self.log_key(ATTEMPTS_KEY, [b.to_json() for b in self.dialogue.builds])
@@ -129,6 +129,6 @@ class CobotDescribe(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameMas
         log_outcome(self)
 
 
-class CobotDescribeBenchmark(benchmark.BuildBenchmark):
+class CobotDescribeBenchmark(BuildBenchmark, GameBenchmark):
     master_class = CobotDescribe
-    episode_fields = benchmark.json_fields(DescribeEpisode)
+    episode_fields = json_fields(DescribeEpisode)

@@ -30,10 +30,10 @@ every turn as the authors' scorer did and records our build beside it.
 """
 from __future__ import annotations
 
-from clemcore.clemgame import DialogueGameMaster, Player
+from clemcore.clemgame import DialogueGameMaster, GameBenchmark, Player
 from clemcore.clemgame.errors import ParseError
 
-from sartco.clem.core import benchmark  # the module, not the class: one GameBenchmark subclass per master.py
+from sartco.clem.core.benchmark import BuildBenchmark, json_fields
 from sartco.clem.core.building import BuildRecord, build_for, parse_failure_for, record_build
 from sartco.clem.core.card import ScoreCard
 from sartco.clem.core.feedback import feedback_for, max_attempts
@@ -97,9 +97,9 @@ class CobotInstruct(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameMas
         log_outcome(self)
 
 
-class CobotInstructBenchmark(benchmark.BuildBenchmark):
+class CobotInstructBenchmark(BuildBenchmark, GameBenchmark):
     master_class = CobotInstruct
-    episode_fields = benchmark.json_fields(InstructEpisode)
+    episode_fields = json_fields(InstructEpisode)
 
     @classmethod
     def fields_of(cls, episode: dict) -> dict:

@@ -7,7 +7,7 @@ from dataclasses import dataclass
 
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
 
-from . import grammar as g
+from . import grammar
 
 
 class FollowError(ValueError):
@@ -37,10 +37,10 @@ class Arrangement:
 def ordinal(text: str) -> int:
     """'8th' / '8' / 'eighth' / 'eight' -> 8 (1-based)."""
     t = text.strip().lower()
-    if t in g.ORDINAL_WORDS:
-        return g.ORDINAL_WORDS[t]
-    if t in g.CARDINAL_WORDS:
-        return g.CARDINAL_WORDS[t]
+    if t in grammar.ORDINAL_WORDS:
+        return grammar.ORDINAL_WORDS[t]
+    if t in grammar.CARDINAL_WORDS:
+        return grammar.CARDINAL_WORDS[t]
     m = re.fullmatch(r"(\d{1,2})(?:st|nd|rd|th)?", t)
     if not m:
         raise FollowError(f"not an ordinal: {text!r}")
@@ -49,7 +49,7 @@ def ordinal(text: str) -> int:
 
 def ordinal_list(text: str) -> list[int]:
     """'first, fourth, and seventh' -> [1, 4, 7]."""
-    return [ordinal(m.group(0)) for m in re.finditer(g.ORD, text, re.IGNORECASE)]
+    return [ordinal(m.group(0)) for m in re.finditer(grammar.ORD, text, re.IGNORECASE)]
 
 
 def _index(one_based: int, size: int, what: str) -> int:
@@ -61,9 +61,9 @@ def _index(one_based: int, size: int, what: str) -> int:
 # --- simple boards ---------------------------------------------------------------------------------
 def object_name(text: str) -> str | None:
     """The name after 'build', if the instruction gives one ('These are the instructions to build wn.')."""
-    for m in g.OBJECT_NAME.finditer(text):
+    for m in grammar.OBJECT_NAME.finditer(text):
         name = m.group("name")
-        if name.lower() not in g.NAME_STOPWORDS and name.lower() not in g.SHAPE_WORDS:
+        if name.lower() not in grammar.NAME_STOPWORDS and name.lower() not in grammar.SHAPE_WORDS:
             return name
     return None
 
@@ -87,19 +87,19 @@ def placements(text: str, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS,
     """
     out: list[Placement] = []
     last = previous
-    for clause in g.CLAUSE_SPLIT.split(text):
+    for clause in grammar.CLAUSE_SPLIT.split(text):
         pending = _Piece()
         current: _Piece | None = None
         pieces: list[_Piece] = []
-        for m in g.TOKEN.finditer(clause):
+        for m in grammar.TOKEN.finditer(clause):
             kind = m.lastgroup
             value = m.group(kind)
             if kind in ("bridge_h", "bridge_v"):
                 kind, value = "shape", "bridge"
-                pending.orientation = pending.orientation or g.ORIENTATION_WORDS[m.group(0).lower()]
+                pending.orientation = pending.orientation or grammar.ORIENTATION_WORDS[m.group(0).lower()]
             if kind == "shape":
                 current, pending = pending, _Piece()
-                current.shape = g.SHAPE_WORDS[value.lower()]
+                current.shape = grammar.SHAPE_WORDS[value.lower()]
                 pieces.append(current)
                 continue
             field, val = _token_value(kind, value, rows, cols)
@@ -108,11 +108,11 @@ def placements(text: str, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS,
                 target = pending          # already set: it belongs to the next piece
             if getattr(target, field) in (None, False):
                 setattr(target, field, val)
-        colorless = [p for p in pieces if p.color is None]
+        colorless = [piece for piece in pieces if piece.color is None]
         if pending.color and colorless:   # "... a nut in the 8th row, red"
             colorless[-1].color = pending.color
-        for p in pieces:
-            last = _resolve(p, last, rows, cols, clause)
+        for piece in pieces:
+            last = _resolve(piece, last, rows, cols, clause)
             out.append(last)
     return out
 
@@ -120,49 +120,49 @@ def placements(text: str, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS,
 def _token_value(kind: str, value: str, rows: int, cols: int):
     low = value.lower()
     if kind == "color":
-        return "color", g.COLOR_WORDS[low]
+        return "color", grammar.COLOR_WORDS[low]
     if kind == "orient":
-        return "orientation", g.ORIENTATION_WORDS[low]
+        return "orientation", grammar.ORIENTATION_WORDS[low]
     if kind in ("row_ord", "row_num"):
         return "row", ordinal(value)
     if kind in ("col_ord", "col_num"):
         return "col", ordinal(value)
     if kind == "row_edge":
-        v = g.ROW_EDGES[low]
+        v = grammar.ROW_EDGES[low]
         return "row", rows if v == "last" else v
     if kind == "col_edge":
-        v = g.COL_EDGES[low]
+        v = grammar.COL_EDGES[low]
         return "col", cols if v == "last" else v
     if kind == "same":
         return "same", True
     raise AssertionError(kind)
 
 
-def _resolve(p: _Piece, last: Placement | None, rows: int, cols: int, clause: str) -> Placement:
+def _resolve(piece: _Piece, last: Placement | None, rows: int, cols: int, clause: str) -> Placement:
     where = f" in {clause.strip()!r:.120}"
-    shape = p.shape
+    shape = piece.shape
     if shape == "bridge":
-        if p.orientation is None:
+        if piece.orientation is None:
             raise FollowError(f"a bridge without an orientation (horizontally/vertically){where}")
-        shape = p.orientation
-    if p.color is None:
+        shape = piece.orientation
+    if piece.color is None:
         raise FollowError(f"a {shape} without a colour{where}")
-    if p.row is None and p.col is None:
+    if piece.row is None and piece.col is None:
         if last is None:
             raise FollowError(f"a {shape} without a row and column{where}")
-        return Placement(shape, p.color, last.x, last.y)
-    if p.row is None or p.col is None:
+        return Placement(shape, piece.color, last.x, last.y)
+    if piece.row is None or piece.col is None:
         if last is None:
-            raise FollowError(f"a {shape} without a {'row' if p.row is None else 'column'}{where}")
-    x = last.x if p.row is None else _index(p.row, rows, "row")
-    y = last.y if p.col is None else _index(p.col, cols, "column")
-    return Placement(shape, p.color, x, y)
+            raise FollowError(f"a {shape} without a {'row' if piece.row is None else 'column'}{where}")
+    x = last.x if piece.row is None else _index(piece.row, rows, "row")
+    y = last.y if piece.col is None else _index(piece.col, cols, "column")
+    return Placement(shape, piece.color, x, y)
 
 
 # --- regular boards --------------------------------------------------------------------------------
 def colors_of(text: str) -> tuple[str, ...]:
     """The object's colours: a Python list after 'colors', else the colour words after 'colors'."""
-    m = g.COLOR_LIST.search(text)
+    m = grammar.COLOR_LIST.search(text)
     if m:
         try:
             value = ast.literal_eval(m.group("list"))
@@ -170,11 +170,11 @@ def colors_of(text: str) -> tuple[str, ...]:
             value = None
         if isinstance(value, list) and value and all(isinstance(c, str) for c in value):
             return tuple(c.strip().lower() for c in value)
-    m = g.COLOR_PHRASE.search(text)
+    m = grammar.COLOR_PHRASE.search(text)
     scope = m.group("rest") if m else text
-    found = re.findall(rf"\b(?:{'|'.join(g.COLOR_WORDS)})\b", scope, re.IGNORECASE)
+    found = re.findall(rf"\b(?:{'|'.join(grammar.COLOR_WORDS)})\b", scope, re.IGNORECASE)
     if not found and m:
-        found = re.findall(rf"\b(?:{'|'.join(g.COLOR_WORDS)})\b", text, re.IGNORECASE)
+        found = re.findall(rf"\b(?:{'|'.join(grammar.COLOR_WORDS)})\b", text, re.IGNORECASE)
     if not found:
         raise FollowError("no colours found (expected e.g. \"Use only these colors: ['red', 'blue']\")")
     return tuple(c.lower() for c in found)
@@ -182,17 +182,17 @@ def colors_of(text: str) -> tuple[str, ...]:
 
 def size_of(text: str) -> tuple[int, int] | None:
     """'each occupying a 2x1 space' -> (2, 1) (rows x columns), or None."""
-    m = g.SIZE.search(text)
+    m = grammar.SIZE.search(text)
     return (int(m.group("h")), int(m.group("w"))) if m else None
 
 
 def regular_name(text: str) -> str | None:
-    m = g.QUOTED_OBJECT.search(text)
+    m = grammar.QUOTED_OBJECT.search(text)
     return m.group("name") if m else None
 
 
 def arrangement_kind(text: str) -> tuple[str, re.Match]:
-    for kind, pattern in g.ARRANGEMENTS:
+    for kind, pattern in grammar.ARRANGEMENTS:
         m = pattern.search(text)
         if m:
             return kind, m

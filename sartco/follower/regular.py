@@ -5,7 +5,7 @@ import re
 
 from ..world import COLORS, DEFAULT_COLS, DEFAULT_ROWS, parse_key
 from ..world.board import MAX_SIDE
-from . import parse as p
+from . import parse
 from .parse import Arrangement, FollowError
 
 Footprint = frozenset[tuple[int, int]]  # the cells an object occupies, as (row, col) offsets from its anchor
@@ -48,12 +48,12 @@ def _span(cells: Footprint) -> tuple[int, int]:
 
 def arrange(text: str, context: str = "", rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS) -> Arrangement:
     """Read a regular-board instruction; decide where the object's anchors go."""
-    kind, m = p.arrangement_kind(text)
-    colors = p.colors_of(text)
+    kind, m = parse.arrangement_kind(text)
+    colors = parse.colors_of(text)
     given = function_name(context)
-    name = given or p.regular_name(text)
+    name = given or parse.regular_name(text)
     cells = footprint(context, given, len(colors), rows, cols)
-    size = p.size_of(text) or (_span(cells) if cells else (1, 1))
+    size = parse.size_of(text) or (_span(cells) if cells else (1, 1))
     h, w = size
     if cells is None:
         cells = frozenset((dx, dy) for dx in range(h) for dy in range(w))
@@ -84,10 +84,10 @@ def arrange(text: str, context: str = "", rows: int = DEFAULT_ROWS, cols: int = 
     if kind == "alternate_grid":  # one empty row / column between objects
         return grid(range(0, R, h + 1), range(0, C, w + 1))
     if kind == "fill_column":  # packed down the column; "every alternate column" skips one
-        first = p._index(p.ordinal(m.group("first")), cols, "column")
+        first = parse._index(parse.ordinal(m.group("first")), cols, "column")
         return grid(range(0, R, h), range(first, C, w + 1) if m.group("repeat") else [first])
     if kind == "fill_row":
-        first = p._index(p.ordinal(m.group("first")), rows, "row")
+        first = parse._index(parse.ordinal(m.group("first")), rows, "row")
         return grid(range(first, R, h + 1) if m.group("repeat") else [first], range(0, C, w))
     if kind == "list_of_line":
         return _list_of_line(m, name, colors, rows, cols, h, w, grid)
@@ -105,15 +105,15 @@ def _list_of_line(m, name, colors, rows, cols, h, w, grid) -> Arrangement:
     if axis == line_axis:
         raise FollowError(f"'{m.group(0)[:80]}': the list and the line are both {axis}s")
     size = {"row": rows, "col": cols}
-    listed = [p._index(v, size[axis], axis) for v in p.ordinal_list(m.group("list"))]
-    line = p._index(p.ordinal(m.group("line")), size[line_axis], line_axis)
+    listed = [parse._index(v, size[axis], axis) for v in parse.ordinal_list(m.group("list"))]
+    line = parse._index(parse.ordinal(m.group("line")), size[line_axis], line_axis)
     extent = {"row": h, "col": w}[line_axis]
     if m.group("remaining"):
         if _axis(m.group("rem_axis")) != line_axis:
             raise FollowError(f"'{m.group(0)[:80]}': repeated along {m.group('rem_axis')}")
         lines = sorted(set(range(line % extent, size[line_axis] - extent + 1, extent)) | {line})
     elif m.group("more"):
-        lines = [line] + [p._index(v, size[line_axis], line_axis) for v in p.ordinal_list(m.group("more"))]
+        lines = [line] + [parse._index(v, size[line_axis], line_axis) for v in parse.ordinal_list(m.group("more"))]
     elif re.search(r"\brepeat", m.string[m.start():], re.IGNORECASE):
         raise FollowError(f"could not read where to repeat the pattern in {m.string[m.start():].strip()!r:.160}")
     else:

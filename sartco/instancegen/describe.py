@@ -79,23 +79,23 @@ def modes_file(gen: InstanceFile, seed: int, dataset: Path, examples: int, per_e
                     template_instruction=instruction_text(record, task, "template"), record=record))
 
 
-def _write(o: Namespace, game_dir: Path, name: str, modes: tuple[str, ...], per_experiment: int | None) -> str:
-    return write(InstanceFile(game_dir, modes_file), name, o.seed, dataset=o.dataset, examples=o.examples,
-                 per_experiment=per_experiment, questions=o.questions, corrections=o.corrections, modes=modes)
+def _write(options: Namespace, game_dir: Path, name: str, modes: tuple[str, ...], per_experiment: int | None) -> str:
+    return write(InstanceFile(game_dir, modes_file), name, options.seed, dataset=options.dataset, examples=options.examples,
+                 per_experiment=per_experiment, questions=options.questions, corrections=options.corrections, modes=modes)
 
 
 # one function per file: (options, game folder) -> the path written
-def instances(o: Namespace, game_dir: Path) -> str:
-    return _write(o, game_dir, "instances.json", ONESHOT, None)
+def instances(options: Namespace, game_dir: Path) -> str:
+    return _write(options, game_dir, "instances.json", ONESHOT, None)
 
 
-def instances_slice(o: Namespace, game_dir: Path) -> str:
-    return _write(o, game_dir, "instances_slice.json", ONESHOT, o.slice)
+def instances_slice(options: Namespace, game_dir: Path) -> str:
+    return _write(options, game_dir, "instances_slice.json", ONESHOT, options.slice)
 
 
-def instances_dialogue(o: Namespace, game_dir: Path) -> str:
-    return _write(o, game_dir, "instances_dialogue.json", DIALOGUE, None)
+def instances_dialogue(options: Namespace, game_dir: Path) -> str:
+    return _write(options, game_dir, "instances_dialogue.json", DIALOGUE, None)
 
 
-def instances_dialogue_slice(o: Namespace, game_dir: Path) -> str:
-    return _write(o, game_dir, "instances_dialogue_slice.json", DIALOGUE, o.slice)
+def instances_dialogue_slice(options: Namespace, game_dir: Path) -> str:
+    return _write(options, game_dir, "instances_dialogue_slice.json", DIALOGUE, options.slice)

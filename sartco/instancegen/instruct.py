@@ -168,52 +168,52 @@ def paper(gen: InstanceFile, seed: int, dataset_dir: Path, published_dir: Path |
 
 
 # one function per file: (options, game folder) -> the path written
-def instances(o: Namespace, game_dir: Path) -> str:
-    return write(InstanceFile(game_dir, table3), "instances.json", o.seed, dataset_dir=o.dataset,
-                 n_examples=o.examples)
+def instances(options: Namespace, game_dir: Path) -> str:
+    return write(InstanceFile(game_dir, table3), "instances.json", options.seed, dataset_dir=options.dataset,
+                 n_examples=options.examples)
 
 
-def instances_ablations(o: Namespace, game_dir: Path) -> str:
-    return write(InstanceFile(game_dir, ablations), "instances_ablations.json", o.seed, dataset_dir=o.dataset,
-                 n_examples=o.examples, episodes=o.ablation_episodes)
+def instances_ablations(options: Namespace, game_dir: Path) -> str:
+    return write(InstanceFile(game_dir, ablations), "instances_ablations.json", options.seed, dataset_dir=options.dataset,
+                 n_examples=options.examples, episodes=options.ablation_episodes)
 
 
-def instances_feedback(o: Namespace, game_dir: Path) -> str:
-    return write(InstanceFile(game_dir, table3, o.attempts), f"instances{FEEDBACK_SUFFIX}.json", o.seed,
-                 dataset_dir=o.dataset, n_examples=o.examples)
+def instances_feedback(options: Namespace, game_dir: Path) -> str:
+    return write(InstanceFile(game_dir, table3, options.attempts), f"instances{FEEDBACK_SUFFIX}.json", options.seed,
+                 dataset_dir=options.dataset, n_examples=options.examples)
 
 
-def instances_smoke(o: Namespace, game_dir: Path) -> str:
-    return write(InstanceFile(game_dir, table3), "instances_smoke.json", o.seed, dataset_dir=o.dataset,
-                 n_examples=o.examples, per_experiment=o.smoke)
+def instances_smoke(options: Namespace, game_dir: Path) -> str:
+    return write(InstanceFile(game_dir, table3), "instances_smoke.json", options.seed, dataset_dir=options.dataset,
+                 n_examples=options.examples, per_experiment=options.smoke)
 
 
-def instances_published(o: Namespace, game_dir: Path) -> str:
-    return write(InstanceFile(game_dir, published), "instances_published.json", o.seed, dataset_dir=o.dataset,
-                 n_examples=o.examples, published_dir=o.published or DEFAULT_PUBLISHED)
+def instances_published(options: Namespace, game_dir: Path) -> str:
+    return write(InstanceFile(game_dir, published), "instances_published.json", options.seed, dataset_dir=options.dataset,
+                 n_examples=options.examples, published_dir=options.published or DEFAULT_PUBLISHED)
 
 
-def instances_published_feedback(o: Namespace, game_dir: Path) -> str:
-    return write(InstanceFile(game_dir, published, o.attempts), f"instances_published{FEEDBACK_SUFFIX}.json",
-                 o.seed, dataset_dir=o.dataset, n_examples=o.examples, published_dir=o.published or DEFAULT_PUBLISHED)
+def instances_published_feedback(options: Namespace, game_dir: Path) -> str:
+    return write(InstanceFile(game_dir, published, options.attempts), f"instances_published{FEEDBACK_SUFFIX}.json",
+                 options.seed, dataset_dir=options.dataset, n_examples=options.examples, published_dir=options.published or DEFAULT_PUBLISHED)
 
 
-def instances_train(o: Namespace, game_dir: Path) -> str:
-    return write(InstanceFile(game_dir, train), "instances_train.json", o.seed, dataset_dir=o.dataset,
-                 n_examples=o.examples, episodes=o.train_episodes)
+def instances_train(options: Namespace, game_dir: Path) -> str:
+    return write(InstanceFile(game_dir, train), "instances_train.json", options.seed, dataset_dir=options.dataset,
+                 n_examples=options.examples, episodes=options.train_episodes)
 
 
-def instances_describers(o: Namespace, game_dir: Path) -> str:
-    return write(InstanceFile(game_dir, described), "instances_describers.json", o.seed, dataset_dir=o.dataset,
-                 n_examples=o.examples, describers_dir=o.describers)
+def instances_describers(options: Namespace, game_dir: Path) -> str:
+    return write(InstanceFile(game_dir, described), "instances_describers.json", options.seed, dataset_dir=options.dataset,
+                 n_examples=options.examples, describers_dir=options.describers)
 
 
-def instances_paper(o: Namespace, game_dir: Path) -> str:
-    return write(InstanceFile(game_dir, paper), "instances_paper.json", o.seed, dataset_dir=o.dataset,
-                 published_dir=o.paper_data)
+def instances_paper(options: Namespace, game_dir: Path) -> str:
+    return write(InstanceFile(game_dir, paper), "instances_paper.json", options.seed, dataset_dir=options.dataset,
+                 published_dir=options.paper_data)
 
 
-def instances_fresh(o: Namespace, game_dir: Path) -> str:
-    return write(FreshInstanceGenerator(str(game_dir), CELLS), "instances_fresh.json", o.seed, dataset_dir=o.dataset,
-                 n_examples=o.examples, fresh_seed=o.fresh, published_dir=o.published,
-                 per_experiment=o.fresh_episodes or None)
+def instances_fresh(options: Namespace, game_dir: Path) -> str:
+    return write(FreshInstanceGenerator(str(game_dir), CELLS), "instances_fresh.json", options.seed, dataset_dir=options.dataset,
+                 n_examples=options.examples, fresh_seed=options.fresh, published_dir=options.published,
+                 per_experiment=options.fresh_episodes or None)

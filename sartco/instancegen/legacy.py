@@ -9,11 +9,10 @@ instruct-paper; --fresh SEED (with --published DIR: the published boards) -> ins
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
 
 from sartco.errors import UserError
 
-from .options import DEFAULTS as D
+from .options import DEFAULTS, add_option
 
 # the flags that choose cobot_instruct's mode
 CHOOSERS = {"instruct-paper": "--protocol paper", "instruct-fresh": "--fresh", "instruct-describers": "--describers",
@@ -22,36 +21,32 @@ CHOOSERS = {"instruct-paper": "--protocol paper", "instruct-fresh": "--fresh", "
 
 def _parser(description: str) -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(description=description)
-    parser.add_argument("--dataset", type=Path, default=D["dataset"], help="generated dataset folder")
-    parser.add_argument("--seed", type=int, default=D["seed"], help="seed of the in-context example choice")
-    parser.add_argument("--examples", type=int, default=D["examples"], help="in-context examples per prompt (0..10)")
+    for name in ("dataset", "seed", "examples"):
+        add_option(parser, name)
     return parser
 
 
 def _instruct_parser() -> argparse.ArgumentParser:
     parser = _parser("Build the episodes of cobot_instruct from SARTCo datasets (= sartco instances instruct...).")
-    add = parser.add_argument
-    add("--published", type=Path, help="imported published dataset folder: write in/instances_published.json "
-                                        "and in/instances_published_feedback.json instead")
-    add("--describers", type=Path, help="dataset from `sartco import-instructions`: write in/instances_describers.json")
-    add("--protocol", choices=("sartco", "paper"), default="sartco",
-        help="paper: write in/instances_paper.json, the paper protocol on the published test files")
-    add("--paper-data", type=Path, help="--protocol paper: the published SARTCo files")
-    add("--ablation-episodes", type=int, default=D["ablation_episodes"])
-    add("--smoke", type=int, default=D["smoke"], help="episodes per experiment in in/instances_smoke.json")
-    add("--attempts", type=int, default=D["attempts"], help="attempts per episode in the feedback experiments")
-    add("--train", action="store_true", help="write in/instances_train.json (the train split) instead")
-    add("--train-episodes", type=int, default=D["train_episodes"], help="with --train: episodes per cell (0: all)")
-    add("--fresh", type=int, metavar="SEED", help="write in/instances_fresh.json: published beside fresh boards")
-    add("--fresh-episodes", type=int, default=D["fresh_episodes"], help="with --fresh: boards per cell (0: all)")
+    add_option(parser, "published", help="imported published dataset folder: write in/instances_published.json "
+                                         "and in/instances_published_feedback.json instead")
+    add_option(parser, "describers", help="dataset from `sartco import-instructions`: write in/instances_describers.json")
+    parser.add_argument("--protocol", choices=("sartco", "paper"), default="sartco",
+                        help="paper: write in/instances_paper.json, the paper protocol on the published test files")
+    add_option(parser, "paper_data", help="--protocol paper: the published SARTCo files")
+    for name in ("ablation_episodes", "smoke", "attempts"):
+        add_option(parser, name)
+    parser.add_argument("--train", action="store_true", help="write in/instances_train.json (the train split) instead")
+    add_option(parser, "train_episodes", help="with --train: episodes per cell (0: all)")
+    add_option(parser, "fresh", help="write in/instances_fresh.json: published beside fresh boards")
+    add_option(parser, "fresh_episodes", help="with --fresh: boards per cell (0: all)")
     return parser
 
 
 def _describe_parser() -> argparse.ArgumentParser:
     parser = _parser("Instances of cobot_describe from a generated dataset's test split (= sartco instances describe).")
-    parser.add_argument("--questions", type=int, default=D["questions"], help="questions in the clarify modes")
-    parser.add_argument("--corrections", type=int, default=D["corrections"], help="corrections in the correct modes")
-    parser.add_argument("--slice", type=int, metavar="N", help="also write the _slice files, N episodes per experiment")
+    for name in ("questions", "corrections", "slice"):
+        add_option(parser, name)
     return parser
 
 
@@ -77,4 +72,4 @@ def parse(game: str, argv: list[str]) -> tuple[str, argparse.Namespace]:
         args, mode = _describe_parser().parse_args(argv), "describe"
     else:
         raise UserError(f"no instance generator for game {game!r}")
-    return mode, argparse.Namespace(**{**D, **vars(args)})
+    return mode, argparse.Namespace(**{**DEFAULTS, **vars(args)})

@@ -15,8 +15,10 @@ from __future__ import annotations
 import ast
 import builtins
 
-from .attributes import NAMES
+from .attributes import OFFERED, RECORD_NAMES, TYPES
 from .classes import EXCEPTIONS
+from .methods import METHODS
+from .modules import MEMBERS
 
 ALLOWED_BUILTINS = frozenset(
     "range zip enumerate len min max abs sum sorted reversed any all round divmod "
@@ -26,36 +28,36 @@ ALLOWED_BUILTINS = frozenset(
 ) | EXCEPTIONS
 PROVIDED = frozenset({"put", "init_board"})  # `board` is provided too, but may be rebound
 DENIED = frozenset(dir(builtins)) - ALLOWED_BUILTINS - {"True", "False", "None", "Ellipsis", "NotImplemented", "__name__"}
-ATTRIBUTES = NAMES  # every attribute name the sandbox offers (a program may also read the names it defines)
+# every attribute name the sandbox offers (a program may also read the names it defines)
+ATTRIBUTES = METHODS.union(*MEMBERS.values(), *TYPES.values(), RECORD_NAMES, OFFERED)
 
 
 # the fields of each allowed node type that hold child nodes; a type not listed is forbidden
-A = ast
 FIELDS: dict[type, tuple[str, ...]] = {
-    A.Module: ("body",), A.ClassDef: ("decorator_list", "bases", "body"), A.FunctionDef: ("decorator_list", "args", "body", "returns"), A.Return: ("value",),
-    A.Assign: ("targets", "value"), A.AugAssign: ("target", "value"),
-    A.AnnAssign: ("target", "annotation", "value"), A.Delete: ("targets",),
-    A.For: ("target", "iter", "body", "orelse"), A.While: ("test", "body", "orelse"),
-    A.If: ("test", "body", "orelse"), A.Expr: ("value",), A.Pass: (), A.Break: (), A.Continue: (),
-    A.Try: ("body", "handlers", "orelse", "finalbody"), A.ExceptHandler: ("type", "body"),
-    A.With: ("items", "body"), A.withitem: ("context_expr", "optional_vars"),
-    A.Raise: ("exc", "cause"), A.Assert: ("test", "msg"), A.Global: (), A.Nonlocal: (),
-    A.Import: (), A.ImportFrom: (),
-    A.BoolOp: ("values",), A.NamedExpr: ("target", "value"), A.BinOp: ("left", "right"),
-    A.UnaryOp: ("operand",), A.Lambda: ("args", "body"), A.IfExp: ("test", "body", "orelse"),
-    A.Dict: ("keys", "values"), A.Set: ("elts",), A.ListComp: ("elt", "generators"),
-    A.SetComp: ("elt", "generators"), A.GeneratorExp: ("elt", "generators"),
-    A.DictComp: ("key", "value", "generators"), A.Compare: ("left", "comparators"),
-    A.Call: ("func", "args", "keywords"), A.FormattedValue: ("value",), A.JoinedStr: ("values",),
-    A.Yield: ("value",), A.YieldFrom: ("value",), A.Constant: (), A.Attribute: ("value",), A.Subscript: ("value", "slice"), A.Starred: ("value",),
-    A.Name: (), A.List: ("elts",), A.Tuple: ("elts",), A.Slice: ("lower", "upper", "step"),
-    A.comprehension: ("target", "iter", "ifs"),
-    A.arguments: ("posonlyargs", "args", "vararg", "kwonlyargs", "kw_defaults", "kwarg", "defaults"),
-    A.arg: ("annotation",), A.keyword: ("value",),
+    ast.Module: ("body",), ast.ClassDef: ("decorator_list", "bases", "body"), ast.FunctionDef: ("decorator_list", "args", "body", "returns"), ast.Return: ("value",),
+    ast.Assign: ("targets", "value"), ast.AugAssign: ("target", "value"),
+    ast.AnnAssign: ("target", "annotation", "value"), ast.Delete: ("targets",),
+    ast.For: ("target", "iter", "body", "orelse"), ast.While: ("test", "body", "orelse"),
+    ast.If: ("test", "body", "orelse"), ast.Expr: ("value",), ast.Pass: (), ast.Break: (), ast.Continue: (),
+    ast.Try: ("body", "handlers", "orelse", "finalbody"), ast.ExceptHandler: ("type", "body"),
+    ast.With: ("items", "body"), ast.withitem: ("context_expr", "optional_vars"),
+    ast.Raise: ("exc", "cause"), ast.Assert: ("test", "msg"), ast.Global: (), ast.Nonlocal: (),
+    ast.Import: (), ast.ImportFrom: (),
+    ast.BoolOp: ("values",), ast.NamedExpr: ("target", "value"), ast.BinOp: ("left", "right"),
+    ast.UnaryOp: ("operand",), ast.Lambda: ("args", "body"), ast.IfExp: ("test", "body", "orelse"),
+    ast.Dict: ("keys", "values"), ast.Set: ("elts",), ast.ListComp: ("elt", "generators"),
+    ast.SetComp: ("elt", "generators"), ast.GeneratorExp: ("elt", "generators"),
+    ast.DictComp: ("key", "value", "generators"), ast.Compare: ("left", "comparators"),
+    ast.Call: ("func", "args", "keywords"), ast.FormattedValue: ("value",), ast.JoinedStr: ("values",),
+    ast.Yield: ("value",), ast.YieldFrom: ("value",), ast.Constant: (), ast.Attribute: ("value",), ast.Subscript: ("value", "slice"), ast.Starred: ("value",),
+    ast.Name: (), ast.List: ("elts",), ast.Tuple: ("elts",), ast.Slice: ("lower", "upper", "step"),
+    ast.comprehension: ("target", "iter", "ifs"),
+    ast.arguments: ("posonlyargs", "args", "vararg", "kwonlyargs", "kw_defaults", "kwarg", "defaults"),
+    ast.arg: ("annotation",), ast.keyword: ("value",),
 }
 WHAT = {
-    A.AsyncWith: "async with", A.TryStar: "try/except*",
-    A.Await: "await",
-    A.AsyncFunctionDef: "async def", A.AsyncFor: "async for",
-    A.Match: "match (class patterns read attributes by name)",
+    ast.AsyncWith: "async with", ast.TryStar: "try/except*",
+    ast.Await: "await",
+    ast.AsyncFunctionDef: "async def", ast.AsyncFor: "async for",
+    ast.Match: "match (class patterns read attributes by name)",
 }

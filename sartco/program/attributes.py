@@ -3,7 +3,7 @@
 Before running (nodes.py): a name with two leading underscores only if the program may define
 it (classes.DEFINABLE: `super().__init__(...)`, `self.__repr__()`) or read it (classes.READABLE);
 any other name must be a
-method or member the sandbox offers (NAMES) or a name the program itself defines (a name it
+method or member the sandbox offers (allowed.ATTRIBUTES) or a name the program itself defines (a name it
 binds, an attribute it stores, a word of one of its string constants: a namedtuple's fields).
 Stores (`obj.name = v`, `del obj.name`, `obj.name += v`) become `$fields(obj, name)[name] ...`.
 
@@ -29,14 +29,15 @@ from __future__ import annotations
 import dataclasses
 import itertools
 import types
+from typing import Any
 
 from .arrays import ARRAY_NAMES, ndarray
 from .budget import Forbidden
 from .chance import RANDOM_METHODS, SeededRandom
 from .classes import DEFINABLE, EXCEPTION_TYPES, FILENAME, READABLE, ProgramClass
 from .conversions import STR
-from .methods import CHECKED_METHODS, METHODS, TYPE_METHODS, _DICT, _FROZEN, _LIST, _SET, _STR
-from .modules import MEMBERS, Module
+from .methods import CHECKED_METHODS, TYPE_METHODS, _DICT, _FROZEN, _LIST, _SET, _STR
+from .standin import Module
 
 TYPES = {  # types of the stand-ins and of the class machinery, with the names they offer
     property: frozenset({"setter", "getter", "deleter"}), SeededRandom: RANDOM_METHODS, ndarray: ARRAY_NAMES,
@@ -54,7 +55,7 @@ UNBOUND = {  # built-in types and stand-in members a program may read a method o
 }
 _TYPE_LIKE = type(STR)  # the type of the program's `str` and `int` (conversions.py)
 RECORD_NAMES = frozenset({"_asdict", "_replace", "_fields", "_make", "_field_defaults", "args"})  # args: exceptions
-NAMES = METHODS.union(*MEMBERS.values(), *TYPES.values(), RECORD_NAMES, {"fromkeys", "from_iterable"})
+OFFERED = frozenset({"fromkeys", "from_iterable"})  # dict.fromkeys, itertools.chain.from_iterable
 
 
 def _defined(obj, name: str) -> bool:
@@ -87,7 +88,7 @@ def _unbound(real: type, name: str):
     return method
 
 
-def read(obj, name: str):
+def read(obj: Any, name: str) -> Any:
     """`obj.name` in a program (`$attr`)."""
     t = type(obj)
     allowed = TYPE_METHODS.get(t)

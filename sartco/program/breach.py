@@ -18,7 +18,7 @@ def breached(source: str, rows: int, cols: int) -> bytes:
     makes it from the global `board` or the last board made. Only the kernel's walls hold."""
     last = [Board(rows, cols)]
 
-    def init_board(rows=DEFAULT_ROWS, cols=DEFAULT_COLS):
+    def init_board(rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS) -> Board:
         last[0] = Board(rows, cols)
         return last[0]
 

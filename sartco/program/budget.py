@@ -16,6 +16,8 @@ that swallows it) still ends with that verdict.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Iterable
+from typing import Any, NoReturn, SupportsIndex
 
 LENGTH = 1_000_000
 INT_BITS = 65_536
@@ -29,7 +31,7 @@ SIZED = frozenset({list, tuple, str, bytes, dict, set, frozenset, range})
 class _Stop(Exception):
     """A budget stop or a refusal: the first one of a program is remembered in STOPPED."""
 
-    def __init__(self, message: str):
+    def __init__(self, message: str) -> None:
         global STOPPED
         super().__init__(message)
         if STOPPED is None:
@@ -51,15 +53,15 @@ class Forbidden(_Stop):
 STOPS = (Limit, Forbidden, MemoryError, RecursionError)
 
 
-def too_long(n):
+def too_long(n: float) -> NoReturn:
     raise Limit(f"a sequence of {n} items is longer than the limit of {LENGTH}")
 
 
-def too_big(bits):
+def too_big(bits: float) -> NoReturn:
     raise Limit(f"an integer of about {int(bits)} bits is larger than the limit of {INT_BITS}")
 
 
-def checked_len(s):
+def checked_len(s: Any) -> Any:
     if len(s) > LENGTH:
         too_long(len(s))
     return s
@@ -67,14 +69,14 @@ def checked_len(s):
 
 # --- checked operators ------------------------------------------------------------------------
 
-def add(a, b):
+def add(a: Any, b: Any) -> Any:
     ta = type(a)
     if ta in SEQS and type(b) is ta and len(a) + len(b) > LENGTH:
         too_long(len(a) + len(b))
     return a + b
 
 
-def mul(a, b):
+def mul(a: Any, b: Any) -> Any:
     ta, tb = type(a), type(b)
     if ta in INTS:
         if tb in INTS:
@@ -87,7 +89,7 @@ def mul(a, b):
     return a * b
 
 
-def power(a, b, mod=None):
+def power(a: Any, b: Any, mod: Any = None) -> Any:
     if mod is None and type(a) in INTS and type(b) in INTS and b > 0 and (a > 1 or a < -1):
         bits = b * math.log2(abs(a))
         if bits > INT_BITS:
@@ -95,13 +97,13 @@ def power(a, b, mod=None):
     return a ** b if mod is None else pow(a, b, mod)
 
 
-def lshift(a, b):
+def lshift(a: Any, b: Any) -> Any:
     if type(a) in INTS and type(b) in INTS and a and b > 0 and a.bit_length() + b > INT_BITS:
         too_big(a.bit_length() + b)
     return a << b
 
 
-def grow(lst, items):
+def grow(lst: list[Any], items: Any) -> None:
     """lst.extend(items) within the length budget: checked before for sized items, after for
     any other iterable."""
     n = len(items) if type(items) in SIZED else 0
@@ -112,14 +114,14 @@ def grow(lst, items):
         too_long(len(lst))
 
 
-def iadd(a, b):
+def iadd(a: Any, b: Any) -> Any:
     if type(a) is list:  # list += is list.extend
         grow(a, b)
         return a
     return add(a, b)
 
 
-def imul(a, b):
+def imul(a: Any, b: Any) -> Any:
     if type(a) is not list:
         return mul(a, b)
     if type(b) in INTS and b > 0 and len(a) * b > LENGTH:
@@ -128,15 +130,16 @@ def imul(a, b):
     return a
 
 
-def iitem(obj, key, op, value):
+def iitem(obj: Any, key: Any, op: Callable[[Any, Any], Any], value: Any) -> None:
     """obj[key] op= value, `op` being one of the checked in-place helpers."""
     obj[key] = op(obj[key], value)
 
 
 # --- wrapped builtins ---------------------------------------------------------------------------
 
-def checked_range(*args):
+def checked_range(*args: SupportsIndex) -> range:
     r = range(*args)
+    n: float
     try:
         n = len(r)
     except OverflowError:
@@ -146,13 +149,13 @@ def checked_range(*args):
     return r
 
 
-def checked_round(number, ndigits=None):
+def checked_round(number: Any, ndigits: Any = None) -> Any:
     if ndigits is not None and type(ndigits) in INTS and abs(ndigits) > 10_000:
         raise Limit(f"round() with ndigits={ndigits} is not allowed")
     return round(number) if ndigits is None else round(number, ndigits)
 
 
-def checked_sum(iterable, start=0):
+def checked_sum(iterable: Iterable[Any], start: Any = 0) -> Any:
     if type(start) in SEQS:
         items = list(iterable)
         total = len(start) + sum(len(x) for x in items if type(x) in SIZED)
@@ -162,5 +165,5 @@ def checked_sum(iterable, start=0):
     return sum(iterable, start)
 
 
-def no_print(*args, **kwargs):
+def no_print(*args: object, **kwargs: object) -> None:
     return None

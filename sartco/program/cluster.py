@@ -15,7 +15,9 @@ Ray's reason, never the program's error. Results equal the local sandbox's
 from __future__ import annotations
 
 import os
+from collections.abc import Iterable
 from dataclasses import astuple
+from typing import Any
 
 from sartco.errors import UserError
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, ErrorCode
@@ -26,7 +28,7 @@ from .verdict import failed
 CHUNK = 256  # programs per Ray task: a task's overhead (~ms) spread over many forks
 
 
-def _run_chunk(programs: list, rows: int, cols: int, limits: list, semantics: str) -> list:
+def _run_chunk(programs: list[str], rows: int, cols: int, limits: list[Any], semantics: str) -> list[tuple[Any, ...]]:
     """On a Ray worker: the chunk in that node's local sandbox, as plain tuples."""
     from sartco.program import pool
 
@@ -36,7 +38,7 @@ def _run_chunk(programs: list, rows: int, cols: int, limits: list, semantics: st
 class RaySandbox:
     """A Sandbox whose programs run on a Ray cluster (see the module docstring)."""
 
-    def __init__(self, address: str | None = None, chunk: int = CHUNK, **init):
+    def __init__(self, address: str | None = None, chunk: int = CHUNK, **init: Any):
         try:
             import ray
         except ImportError:
@@ -49,7 +51,7 @@ class RaySandbox:
             ray.init(address=address, ignore_reinit_error=True, log_to_driver=False, **init)
         self._remote = ray.remote(num_cpus=1, max_retries=0)(_run_chunk)
 
-    def execute_many(self, programs, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, limits: Limits | None = None,
+    def execute_many(self, programs: Iterable[str], rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, limits: Limits | None = None,
                      *, semantics: str = MODULE) -> list[Execution]:
         if semantics not in SEMANTICS:
             raise ValueError(f"unknown semantics {semantics!r}; expected one of {', '.join(SEMANTICS)}")
@@ -60,7 +62,7 @@ class RaySandbox:
         results: list[Execution] = []
         for chunk, ref in zip(chunks, refs):
             try:
-                rows_ = self.ray.get(ref)
+                rows_: list[tuple[Any, ...]] = self.ray.get(ref)
                 results.extend(Execution(ok, None if code is None else ErrorCode(code), message, cells, puts)
                                for ok, code, message, cells, puts in rows_)
             except Exception as exc:  # Ray's failure, never the program's

@@ -19,9 +19,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from sartco.world import ErrorCode, parse_key
+from sartco.world import Cells, ErrorCode, parse_key
 
-E = ErrorCode
 
 
 @dataclass(frozen=True, slots=True)
@@ -35,32 +34,35 @@ class Comparison:
     f1: float
 
 
-def _stacks(cells: dict) -> dict[str, list[tuple]]:
+Stacks = dict[str, list[tuple[str, ...]]]  # a board's cells with each piece a tuple
+
+
+def _stacks(cells: Cells) -> Stacks:
     return {k: [tuple(p) for p in v] for k, v in cells.items() if v}
 
 
-def _category(built: dict, target: dict) -> ErrorCode | None:
+def _category(built: Stacks, target: Stacks) -> ErrorCode | None:
     for key in sorted(target, key=parse_key):
         want, got = target[key], built.get(key)
         if got is None:
-            return E.MISMATCH_LOCATION
+            return ErrorCode.MISMATCH_LOCATION
         if got == want:
             continue
         if len(got) != len(want):
-            return E.MISMATCH_COUNT
+            return ErrorCode.MISMATCH_COUNT
         shapes_got, shapes_want = [p[0] for p in got], [p[0] for p in want]
         if sorted(shapes_got) != sorted(shapes_want):
-            return E.MISMATCH_SHAPE
+            return ErrorCode.MISMATCH_SHAPE
         if shapes_got != shapes_want:
-            return E.MISMATCH_ORDER
-        return E.MISMATCH_COLOR
+            return ErrorCode.MISMATCH_ORDER
+        return ErrorCode.MISMATCH_COLOR
     if any(key not in target for key in built):
-        return E.MISMATCH_LOCATION
+        return ErrorCode.MISMATCH_LOCATION
     return None
 
 
-def _entries(stacks: dict) -> set[tuple]:
-    out = set()
+def _entries(stacks: Stacks) -> set[tuple[int | str, ...]]:
+    out: set[tuple[int | str, ...]] = set()
     for key, stack in stacks.items():
         r, c = parse_key(key)
         for level, piece in enumerate(stack):
@@ -71,7 +73,7 @@ def _entries(stacks: dict) -> set[tuple]:
 EQUAL = Comparison(1, None, 1.0, 1.0, 1.0)  # frozen: one for every exact build
 
 
-def compare(built_cells: dict, target_cells: dict) -> Comparison:
+def compare(built_cells: Cells, target_cells: Cells) -> Comparison:
     if built_cells == target_cells:  # the common case: category None, every entry a hit
         return EQUAL
     built, target = _stacks(built_cells), _stacks(target_cells)
@@ -87,7 +89,7 @@ def compare(built_cells: dict, target_cells: dict) -> Comparison:
     return Comparison(int(category is None), category, precision, recall, f1)
 
 
-def judge(ok: bool, error: ErrorCode | None, cells: dict, target: dict) -> Comparison:
+def judge(ok: bool, error: ErrorCode | None, cells: Cells, target: Cells) -> Comparison:
     """An execution (did it run to the end, its error, the board it built) against its target."""
     cmp = compare(cells, target)
     if ok:

@@ -36,6 +36,10 @@ import errno
 import math
 import resource
 import tempfile
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from .execution import Limits
 
 # what a program's process may call (names libseccomp knows; a name this architecture lacks is skipped)
 ALLOWED = (
@@ -115,7 +119,7 @@ class Walls:
         self.bpf = ctypes.create_string_buffer(bpf, len(bpf))
         self.program = _SockFprog(len(bpf) // 8, ctypes.addressof(self.bpf))
 
-    def apply(self, limits, base: int) -> None:
+    def apply(self, limits: Limits, base: int) -> None:
         """Confine this process (a freshly forked child): the rlimits, death with the template,
         no new privileges, the filter. Raises OSError when the kernel refuses one of them."""
         for kind, value in (

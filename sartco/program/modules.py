@@ -1,6 +1,6 @@
 """The modules a program may import: safe, bounded stand-ins of harmless standard modules.
 
-`import math`, `from itertools import product`, `import numpy as np`, ... bind a fresh `Module`
+`import math`, `from itertools import product`, `import numpy as np`, ... bind a fresh `Module` (standin.py)
 per import (nothing a program does to it outlives the program) whose members are the real
 functions where they cannot reach anything outside the task's world or grow without a budget,
 and checked versions where they could (`math.factorial`, `operator.mul`, ...). Every other
@@ -38,17 +38,8 @@ from . import budget, chance, formatting, named, numpy_members, records
 from .budget import STOPS, Forbidden, too_big
 from .conversions import INT
 from .json_module import MEMBERS as JSON_MEMBERS
+from .standin import Module
 
-
-class Module:
-    """A stand-in module: its members are plain attributes (read through runtime's $attr)."""
-
-    def __init__(self, name: str, members: dict):
-        self.__dict__.update(members)
-        self.__dict__["__name__"] = name
-
-    def __repr__(self):
-        return f"<module {self.__dict__['__name__']!r} (sandbox stand-in)>"
 
 
 # --- checked members ------------------------------------------------------------------------------

@@ -6,15 +6,15 @@ Any future stand-in that reads attributes by name (functools.wraps' `assigned`/`
 reads them through `read`."""
 from __future__ import annotations
 
+from typing import Any
+
+from .attributes import read as attribute
 from .budget import Forbidden
+from .classes import READABLE
 
 
-def read(obj, name):
+def read(obj: Any, name: object) -> Any:
     """`obj.name` for a name given as a string (dotted names as attrgetter takes them)."""
-    # imported here: attributes.py imports the stand-in modules that use this one
-    from .attributes import read as attribute
-    from .classes import READABLE
-
     if type(name) is not str:
         raise TypeError(f"attribute name must be a str, not {type(name).__name__}")
     for part in name.split("."):
@@ -29,18 +29,18 @@ class attrgetter:  # operator's name
 
     __slots__ = ("_names",)
 
-    def __init__(self, name, *names):
+    def __init__(self, name: str, *names: str) -> None:
         self._names = (name, *names)
         for n in self._names:
             if type(n) is not str:
                 raise TypeError(f"attribute name must be a str, not {type(n).__name__}")
 
-    def __call__(self, obj):
+    def __call__(self, obj: Any) -> Any:
         if len(self._names) == 1:
             return read(obj, self._names[0])
         return tuple(read(obj, n) for n in self._names)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"operator.attrgetter({', '.join(map(repr, self._names))})"
 
 
@@ -49,15 +49,15 @@ class methodcaller:  # operator's name
 
     __slots__ = ("_name", "_args", "_kwargs")
 
-    def __init__(self, name, /, *args, **kwargs):
+    def __init__(self, name: str, /, *args: Any, **kwargs: Any) -> None:
         if type(name) is not str:
             raise TypeError("method name must be a string")
         self._name, self._args, self._kwargs = name, args, kwargs
 
-    def __call__(self, obj):
+    def __call__(self, obj: Any) -> Any:
         if "." in self._name:
             raise Forbidden(f"method name {self._name!r:.40} is not a method")
         return read(obj, self._name)(*self._args, **self._kwargs)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"operator.methodcaller({self._name!r:.40}, ...)"

@@ -30,9 +30,11 @@ from __future__ import annotations
 import re as _re
 import sys
 import types
+from typing import Any, NoReturn
 
 from .budget import Forbidden
-from .modules import REFUSED, Module, load
+from .modules import REFUSED, load
+from .standin import Module
 
 MODULE_NAME = "cocobots_scorer"
 
@@ -45,10 +47,10 @@ class _RefusedFunction:
     def __init__(self, name: str):
         self.name = name
 
-    def __call__(self, *args, **kwargs):
+    def __call__(self, *args: object, **kwargs: object) -> NoReturn:
         raise Forbidden(f"{self.name} is not available in the sandbox: {REFUSED[self.name.partition('.')[0]]}")
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"<{self.name}: not available in the sandbox>"
 
 
@@ -56,7 +58,7 @@ SCORER = sys.modules.setdefault(MODULE_NAME, types.ModuleType(MODULE_NAME, "the 
 _RE = {name: _RefusedFunction(f"re.{name}") for name in _re.__all__ if name.islower()}
 
 
-def paper(env: dict, source: str) -> tuple[dict, dict]:
+def paper(env: dict[str, Any], source: str) -> tuple[dict[str, Any], dict[str, Any]]:
     """(globals, locals) of the authors' exec, from runtime.run's module namespace `env`
     (which loses `board`: it moves to the locals)."""
     board = env.pop("board")

@@ -30,7 +30,6 @@ from .classes import DEFINABLE, READABLE, mangle_private
 from .formatting import LONG_NUMBER, SPEC_DIGITS
 from .modules import MEMBERS, refusal
 
-A = ast
 CHECKED_OPS = {ast.Add: "$add", ast.Mult: "$mul", ast.Pow: "$pow", ast.LShift: "$lshift", ast.Mod: "$mod"}
 INPLACE_OPS = {ast.Add: "$iadd", ast.Mult: "$imul", ast.Pow: "$ipow", ast.LShift: "$ilshift", ast.Mod: "$imod"}
 
@@ -200,10 +199,10 @@ def _r_import_from(n, walk):
 
 
 RULES = {
-    A.arg: _r_arg, A.keyword: _r_keyword, A.FunctionDef: _r_function,
-    A.For: _r_loop, A.While: _r_loop, A.Lambda: _r_lambda, A.comprehension: _r_comprehension,
-    A.FormattedValue: _r_formatted, A.ExceptHandler: _r_handler, A.Try: _r_try, A.Global: _r_scope, A.Nonlocal: _r_scope,
-    A.Import: _r_import, A.ImportFrom: _r_import_from, A.ClassDef: _r_class,
+    ast.arg: _r_arg, ast.keyword: _r_keyword, ast.FunctionDef: _r_function,
+    ast.For: _r_loop, ast.While: _r_loop, ast.Lambda: _r_lambda, ast.comprehension: _r_comprehension,
+    ast.FormattedValue: _r_formatted, ast.ExceptHandler: _r_handler, ast.Try: _r_try, ast.Global: _r_scope, ast.Nonlocal: _r_scope,
+    ast.Import: _r_import, ast.ImportFrom: _r_import_from, ast.ClassDef: _r_class,
 }
 
 
@@ -280,19 +279,20 @@ def _w_display(n, wrapped, walk):
 
 # every wrap, called as wrap(node, wrapped, walk)
 WRAPS = {
-    A.Attribute: _w_attribute, A.BinOp: _w_binop, A.AugAssign: _w_augassign,
-    A.JoinedStr: _w_joined, A.List: _w_display, A.Tuple: _w_display, A.Set: _w_display,
+    ast.Attribute: _w_attribute, ast.BinOp: _w_binop, ast.AugAssign: _w_augassign,
+    ast.JoinedStr: _w_joined, ast.List: _w_display, ast.Tuple: _w_display, ast.Set: _w_display,
 }
 
 
 def _is_list_field(t: type, field: str) -> bool:
     """Whether a field of node type t holds a list of nodes (from the grammar: `*` fields)."""
-    if t in (A.Lambda, A.IfExp):
+    if t in (ast.Lambda, ast.IfExp):
         return False
     return field in {
-        "body", "targets", "orelse", "values", "elts", "keys", "generators", "comparators", "keywords", "ifs",
-        "posonlyargs", "kwonlyargs", "kw_defaults", "defaults", "handlers", "finalbody", "decorator_list", "bases", "items",
-    } or (field == "args" and t in (A.Call, A.arguments))
+        "body", "targets", "orelse", "values", "elts", "keys", "generators", "comparators",
+        "keywords", "ifs", "posonlyargs", "kwonlyargs", "kw_defaults", "defaults", "handlers", "finalbody",
+        "decorator_list", "bases", "items",
+    } or (field == "args" and t in (ast.Call, ast.arguments))
 
 
 # per allowed node type: (rule or None, ((field, whether it holds a list of nodes), ...))

@@ -27,7 +27,6 @@ from .driver import Worker
 from .execution import MODULE, SEMANTICS, Execution, Limits, not_a_str
 from .verdict import failed
 
-E = ErrorCode
 BATCH = 32  # a call with fewer items than this uses one template
 
 
@@ -116,7 +115,7 @@ class LocalSandbox:
             todo, copies = [], []
             for i, p in enumerate(programs):
                 if type(p) is not str:
-                    results[i] = failed(E.TYPE_ERROR, not_a_str(p))
+                    results[i] = failed(ErrorCode.TYPE_ERROR, not_a_str(p))
                 elif cache and p in first:
                     copies.append((i, first[p]))
                 else:
@@ -127,11 +126,11 @@ class LocalSandbox:
                 results[i] = answer
             for i, source in copies:
                 results[i] = results[source]
-            return [r if type(r) is Execution else failed(E.HARNESS_ERROR, "the sandbox returned no result")
+            return [r if type(r) is Execution else failed(ErrorCode.HARNESS_ERROR, "the sandbox returned no result")
                     for r in results]
         except Exception as exc:  # the caller must never see an exception
             n = len(programs) if isinstance(programs, list) else 1
-            return [failed(E.HARNESS_ERROR, f"sandbox failure: {type(exc).__name__}: {exc}") for _ in range(n)]
+            return [failed(ErrorCode.HARNESS_ERROR, f"sandbox failure: {type(exc).__name__}: {exc}") for _ in range(n)]
 
     def execute(self, code: str, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, limits: Limits | None = None, *,
                 semantics: str = MODULE) -> Execution:

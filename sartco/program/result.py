@@ -16,19 +16,20 @@ from itertools import chain
 from operator import is_
 
 from sartco.world import Board, WorldError
+from sartco.world.board import Cells
 from sartco.world.rules import replay
 
 FORGED = "the board was changed outside put"
 
 
-def board_result(board) -> tuple[dict, int, str | None]:
+def board_result(board: Board) -> tuple[Cells, int, str | None]:
     """(cells, puts, problem): what `put` placed on `board`, and None when its storage holds
     exactly that, else the one-line reason (FORGED ...)."""
     fresh, problem = checked(board)
     return ({}, 0, problem) if fresh is None else (fresh.cells(), fresh.puts, problem)
 
 
-def checked(board) -> tuple[Board | None, str | None]:
+def checked(board: Board) -> tuple[Board | None, str | None]:
     """(the board that put placed, problem): `board`'s log replayed on a fresh board, and None
     when `board`'s storage holds exactly that, else the one-line reason (FORGED ...); no board
     when the log is not one that put wrote. The cyclic collector is off meanwhile: this work
@@ -48,7 +49,7 @@ def checked(board) -> tuple[Board | None, str | None]:
             gc.enable()
 
 
-def _same(stacks, built: list) -> bool:
+def _same(stacks: object, built: list[list[tuple[str, str]]]) -> bool:
     """`stacks` is a list of lists holding the very piece objects of `built` (the replay puts
     the log's own tuples): compared by identity, in C, so nothing a program stored there runs
     (a str subclass may answer any ==)."""

@@ -45,7 +45,6 @@ from .records import build_class
 from .modules import forget_typing, import_module, load
 from .result import checked
 
-E = ErrorCode
 MESSAGE_CHARS = 400
 _STEPS = repeat(True, 0)  # the current program's step counter
 
@@ -105,9 +104,9 @@ def compile_program(source: str, limits) -> tuple:
     """(code object, None, "") or (None, error code, message): the source's type and size
     checked, then parsed, checked, instrumented and compiled (see instrument.py)."""
     if type(source) is not str:
-        return (None, E.TYPE_ERROR, not_a_str(source))
+        return (None, ErrorCode.TYPE_ERROR, not_a_str(source))
     if len(source) > limits.source:
-        return (None, E.RESOURCE_LIMIT, f"the program has {len(source)} characters; the limit is {limits.source}")
+        return (None, ErrorCode.RESOURCE_LIMIT, f"the program has {len(source)} characters; the limit is {limits.source}")
     collecting = gc.isenabled()
     try:
         # parsing allocates thousands of syntax-tree nodes that form no cycles (they are freed by
@@ -115,17 +114,17 @@ def compile_program(source: str, limits) -> tuple:
         gc.disable()
         return (prepare(source), None, "")
     except Forbidden as exc:
-        return (None, E.FORBIDDEN, clean(str(exc)))
+        return (None, ErrorCode.FORBIDDEN, clean(str(exc)))
     except SyntaxError as exc:
-        return (None, E.SYNTAX_ERROR, clean(f"line {exc.lineno}: {exc.msg}" if exc.lineno else str(exc.msg)))
+        return (None, ErrorCode.SYNTAX_ERROR, clean(f"line {exc.lineno}: {exc.msg}" if exc.lineno else str(exc.msg)))
     except (ValueError, UnicodeError) as exc:  # e.g. null bytes, lone surrogates
-        return (None, E.SYNTAX_ERROR, clean(str(exc)))
+        return (None, ErrorCode.SYNTAX_ERROR, clean(str(exc)))
     except RecursionError:
-        return (None, E.RESOURCE_LIMIT, "the program is too deeply nested to compile")
+        return (None, ErrorCode.RESOURCE_LIMIT, "the program is too deeply nested to compile")
     except MemoryError:
-        return (None, E.RESOURCE_LIMIT, "the program's process ran out of memory while compiling it")
+        return (None, ErrorCode.RESOURCE_LIMIT, "the program's process ran out of memory while compiling it")
     except Exception as exc:  # a compiler failure must not end the process without an answer
-        return (None, E.HARNESS_ERROR, clean(f"internal error while compiling: {type(exc).__name__}: {exc}"))
+        return (None, ErrorCode.HARNESS_ERROR, clean(f"internal error while compiling: {type(exc).__name__}: {exc}"))
     finally:
         if collecting:
             gc.enable()
@@ -134,10 +133,10 @@ def compile_program(source: str, limits) -> tuple:
 # --- run ----------------------------------------------------------------------------------------
 
 EXCEPTION_CODES = (
-    (WorldError, None), (Forbidden, E.FORBIDDEN),
-    ((Limit, RecursionError, MemoryError, OverflowError), E.RESOURCE_LIMIT),
-    (NameError, E.NAME_ERROR), (TypeError, E.TYPE_ERROR), (ValueError, E.VALUE_ERROR),
-    (KeyError, E.KEY_ERROR), (IndexError, E.INDEX_ERROR), (ZeroDivisionError, E.ZERO_DIVISION),
+    (WorldError, None), (Forbidden, ErrorCode.FORBIDDEN),
+    ((Limit, RecursionError, MemoryError, OverflowError), ErrorCode.RESOURCE_LIMIT),
+    (NameError, ErrorCode.NAME_ERROR), (TypeError, ErrorCode.TYPE_ERROR), (ValueError, ErrorCode.VALUE_ERROR),
+    (KeyError, ErrorCode.KEY_ERROR), (IndexError, ErrorCode.INDEX_ERROR), (ZeroDivisionError, ErrorCode.ZERO_DIVISION),
 )
 
 
@@ -168,7 +167,7 @@ def classify(exc: BaseException) -> ErrorCode:
     for kinds, code in EXCEPTION_CODES:
         if isinstance(exc, kinds):
             return exc.code if code is None else code
-    return E.RUNTIME_ERROR
+    return ErrorCode.RUNTIME_ERROR
 
 
 def _depth() -> int:
@@ -267,16 +266,16 @@ def _run(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE,
         SERIALS.clear()  # (the program's objects go with it)
         fresh, forged = checked(result_board)  # only what put placed leaves the worker
         if forged is not None:
-            error, message = E.FORBIDDEN, forged
+            error, message = ErrorCode.FORBIDDEN, forged
         message = clean(message)
     except MemoryError:
-        error, message, fresh = E.RESOURCE_LIMIT, "the sandbox ran out of memory while reading the board", None
+        error, message, fresh = ErrorCode.RESOURCE_LIMIT, "the sandbox ran out of memory while reading the board", None
     except Exception as exc:  # never `ok` after an internal error
-        error, message, fresh = E.HARNESS_ERROR, clean(f"internal error: {type(exc).__name__}"), None
+        error, message, fresh = ErrorCode.HARNESS_ERROR, clean(f"internal error: {type(exc).__name__}"), None
     return error is None, error, message, fresh
 
 
 def _verdict(exc: BaseException | None, limits) -> tuple:
     if length_hint(_STEPS) == 0:
-        return E.TIMEOUT, f"the program used up its budget of {limits.steps} steps (loop iterations and calls)"
+        return ErrorCode.TIMEOUT, f"the program used up its budget of {limits.steps} steps (loop iterations and calls)"
     return classify(exc), describe(exc)

@@ -61,7 +61,7 @@ def execute(code: str, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, limit
     return current().execute(code, rows, cols, limits, semantics=semantics)
 
 
-def execute_many(programs, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, limits: Limits | None = None, *,
+def execute_many(programs: Iterable[str], rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, limits: Limits | None = None, *,
                  workers: int | None = None, cache: bool = True, semantics: str = MODULE) -> list[Execution]:
     """Run many programs in the sandbox in use, results in input order. `workers` and `cache`
     are the local sandbox's (pool.LocalSandbox.execute_many); another sandbox ignores them."""

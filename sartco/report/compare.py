@@ -22,7 +22,7 @@ from sartco.errors import UserError
 
 from . import intervals
 from .files import markdown_table, write_csv
-from .tables import collect
+from .rows import collect
 
 
 def configure(parser: argparse.ArgumentParser) -> None:

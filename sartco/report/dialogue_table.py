@@ -8,7 +8,7 @@ Score names (scores.json, written by sartco.clem.describe.dialogue.DialogueScore
   Questions Asked, Corrections Sent, Describer Words   (instruction, answers and corrections)
 
 write(episodes, out) writes dialogue.md, dialogue.csv and dialogue_rounds.svg from the episodes of
-sartco.report.tables.collect (nothing when none has dialogue scores) and returns the names written. Percentages are over all
+sartco.report.rows.collect (nothing when none has dialogue scores) and returns the names written. Percentages are over all
 episodes of a row, an aborted episode counting 0, as in the other tables; the means of the
 counts are over the played episodes, the first success round over the episodes that succeeded.
 """
@@ -29,7 +29,7 @@ HEADER = ["model", "game", "experiment", "mode", "questions", "corrections", "ep
 
 
 def dialogue_episodes(episodes: list[dict]) -> list[dict]:
-    """The episodes of sartco.report.tables.collect that have dialogue scores, with their dialogue fields."""
+    """The episodes of sartco.report.rows.collect that have dialogue scores, with their dialogue fields."""
     out = []
     for e in episodes:
         scores, exp = e["scores"], e["experiment_fields"]
@@ -91,7 +91,7 @@ def curve_table(lines: dict[tuple[str, str], list[float]]) -> str:
 
 
 def write(episodes: list[dict], out: Path) -> list[str]:
-    """dialogue.md / .csv / dialogue_rounds.svg from the rows of sartco.report.tables.collect."""
+    """dialogue.md / .csv / dialogue_rounds.svg from the rows of sartco.report.rows.collect."""
     episodes = dialogue_episodes(episodes)
     if not episodes:
         return []

@@ -2,7 +2,7 @@
 
 Reads the paper's Table 3 (`table3.json` in ../shared/sartco-data/paper-protocol, at run time)
 and the episodes of paper-protocol experiments (experiment field `protocol: "paper"`, game entry
-cobot_instruct_paper) from the rows of sartco.report.collect, and writes
+cobot_instruct_paper) from the rows of sartco.report.rows.collect, and writes
   paper_table3.md / paper_table3.csv
 one line per Table 3 cell and instruction source, in the paper's order: the paper's EM, CB, ES for
 CodeLlama-34B, GPT-4 and Claude-3, then the same for each model of the results (the mean over the
@@ -35,7 +35,7 @@ NAMES = ("EM", "CB", "ES", "ES leak-free", "FG")
 
 
 def is_paper_episode(e: dict) -> bool:
-    """A report row (sartco.report.tables.collect) of an episode played in the paper protocol."""
+    """A report row (sartco.report.rows.collect) of an episode played in the paper protocol."""
     return e["experiment_fields"].get("protocol") == PROTOCOL
 
 

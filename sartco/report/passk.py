@@ -21,6 +21,7 @@ from pathlib import Path
 from sartco.clem.tooling.sampling import SAMPLES  # RESULTS/samples/s1..sN
 
 from .files import markdown_table, write_csv
+from .rows import collect
 
 
 def pass_at_k(n: int, c: int, k: int) -> float:
@@ -84,7 +85,6 @@ def write_alone(results: Path, out: Path) -> int:
 
 def write(results: Path, out: Path) -> list[str]:
     """passk.md / passk.csv when RESULTS holds sample folders; the names written."""
-    from .tables import collect  # the report's reader (tables imports this module)
     folders = sample_folders(results)
     if not folders:
         return []

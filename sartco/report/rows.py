@@ -1,5 +1,6 @@
 """The report's row: one scored episode as every table of `sartco report` reads it, typed
-(EpisodeRow) and built in one place (episode_row) from the episode's own files.
+(EpisodeRow), built in one place (episode_row) from the episode's own files and read for a
+whole results folder by `collect` (every table, passk.py for each sample folder, compare.py).
 
 The model is the episode's own record: clemcore writes the run's model identifier (the results
 folder name of the model pair, e.g. `mock` or `gpt-4o-t0.0--gpt-4o-t0.0`) into interactions.json
@@ -11,6 +12,7 @@ from typing import NotRequired, TypedDict
 
 from sartco.episode import (ATTEMPTS, CELL_F1, CODEBLEU, ERROR_CATEGORY, ES_AT_1, EXACT_MATCH, EXECUTION_SUCCESS,
                             FUNCTION_GENERALISATION, HARNESS_REASON, MAX_ATTEMPTS)
+from sartco.clem.tooling.sampling import SAMPLES  # RESULTS/samples/s1..sN: passk.py reads them
 from sartco.errors import UserError
 from sartco.world import ErrorCode
 
@@ -75,3 +77,33 @@ def episode_row(game: str, exp: dict, episode_dir: Path, data: dict) -> EpisodeR
         attempts_used=number(scores.get(ATTEMPTS)),
         experiment_fields=exp, scores=scores, player_models=data.get("player_models"),
     )
+
+
+def collect(results: Path, games: list[str] | None = None) -> list[EpisodeRow]:
+    """One row per scored episode (sartco.report.rows.episode_row)."""
+    if not results.is_dir():
+        raise UserError(f"{results}: no such results folder")
+    experiments: dict[Path, dict | None] = {}
+    episodes = []
+    for path in sorted(results.rglob("scores.json")):
+        if path.relative_to(results).parts[0] == SAMPLES:  # `sartco sample`'s runs: passk.md
+            continue
+        episode_dir = path.parent
+        exp_dir = episode_dir.parent
+        if exp_dir not in experiments:
+            exp_file = exp_dir / "experiment.json"
+            experiments[exp_dir] = load_json(exp_file) if exp_file.is_file() else None
+        exp = experiments[exp_dir]
+        if not exp or "task" not in exp or "board_type" not in exp:
+            continue  # not a SARTCo experiment
+        game = exp.get("game_name") or exp_dir.parent.name
+        if games and game not in games:
+            continue
+        try:
+            data = load_json(path)
+        except UserError:
+            continue  # listed as unreadable by sartco.report.completeness
+        episodes.append(episode_row(game, exp, episode_dir, data))
+    if not episodes:
+        raise UserError(f"{results}: no scored SARTCo episodes (run `clem score -r {results}` first)")
+    return episodes

@@ -29,13 +29,12 @@ import re
 from collections import Counter, defaultdict
 from pathlib import Path
 
-from sartco.errors import UserError
 from sartco.dataset import SOURCES as SOURCE_ORDER, TASKS as TASK_ORDER
 
 from . import (completeness, contamination, dialogue_table, harness_table, html, html_tables, intervals, paper_table,
                passk, robustness)
-from .files import load_json, markdown_table, percent, replace_stale, write_csv
-from .rows import EpisodeRow, episode_row
+from .files import markdown_table, percent, replace_stale, write_csv
+from .rows import collect
 
 # clemgame entries whose cells are rows of another game's Table 3 (the published human- and
 # model-written instructions beside the template ones, as in the paper); every other game name
@@ -51,36 +50,6 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--out", type=Path, default=Path("scores"), help="folder for the tables (default: scores/)")
     parser.add_argument("-g", "--game", action="append", default=None,
                         help="only this game (repeatable; default: every game with SARTCo experiments)")
-
-
-def collect(results: Path, games: list[str] | None = None) -> list[EpisodeRow]:
-    """One row per scored episode (sartco.report.rows.episode_row)."""
-    if not results.is_dir():
-        raise UserError(f"{results}: no such results folder")
-    experiments: dict[Path, dict | None] = {}
-    episodes = []
-    for path in sorted(results.rglob("scores.json")):
-        if path.relative_to(results).parts[0] == passk.SAMPLES:  # `sartco sample`'s runs: passk.md
-            continue
-        episode_dir = path.parent
-        exp_dir = episode_dir.parent
-        if exp_dir not in experiments:
-            exp_file = exp_dir / "experiment.json"
-            experiments[exp_dir] = load_json(exp_file) if exp_file.is_file() else None
-        exp = experiments[exp_dir]
-        if not exp or "task" not in exp or "board_type" not in exp:
-            continue  # not a SARTCo experiment
-        game = exp.get("game_name") or exp_dir.parent.name
-        if games and game not in games:
-            continue
-        try:
-            data = load_json(path)
-        except UserError:
-            continue  # listed as unreadable by sartco.report.completeness
-        episodes.append(episode_row(game, exp, episode_dir, data))
-    if not episodes:
-        raise UserError(f"{results}: no scored SARTCo episodes (run `clem score -r {results}` first)")
-    return episodes
 
 
 def _summarise(group: list[dict]) -> dict:

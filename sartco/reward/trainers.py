@@ -67,6 +67,7 @@ def compute_score_batch(data_sources, solution_strs, ground_truths, extra_infos,
     ids = [(info or {}).get("id") for info in extra_infos]
     if not all(isinstance(i, str) for i in ids):
         raise ValueError("every extra_info needs the episode's 'id' (the id column of sartco export-dataset)")
-    _VERL_EPISODES.include({"id": key, "episode": truth} for key, truth in zip(ids, ground_truths))
-    results = score(list(zip(ids, solution_strs)), _VERL_EPISODES, probes=False)
+    keys = [str(i) for i in ids]
+    _VERL_EPISODES.include({"id": key, "episode": truth} for key, truth in zip(keys, ground_truths))
+    results = score(list(zip(keys, solution_strs)), _VERL_EPISODES, probes=False)
     return [0.0 if r.harness_error else float(r.es if reward == "es" else r.cell_f1) for r in results]

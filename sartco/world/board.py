@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import re
 from itertools import compress
+from typing import NoReturn, SupportsIndex
 
 from .components import DEFAULT_COLS, DEFAULT_ROWS
 from .error_codes import ErrorCode, WorldError
@@ -47,14 +48,14 @@ class Board:
         twin.puts, twin.log = self.puts, self.log.copy()
         return twin
 
-    def __deepcopy__(self, memo) -> "Board":
+    def __deepcopy__(self, memo: dict[int, object]) -> "Board":
         return self.__copy__()  # the memo never sees the storage
 
-    def __reduce_ex__(self, protocol):
+    def __reduce_ex__(self, protocol: SupportsIndex) -> NoReturn:
         raise WorldError(ErrorCode.FORBIDDEN, "a board cannot be reduced or pickled: only put changes a board")
 
-    def __reduce__(self):
-        return self.__reduce_ex__(0)
+    def __reduce__(self) -> NoReturn:
+        self.__reduce_ex__(0)
 
     def __repr__(self) -> str:
         return f"<board {self.rows}x{self.cols}, {self.puts} pieces>"
@@ -65,7 +66,7 @@ class Board:
         return {key: [*map(list, stack)] for key, stack in compress(zip(_keys(self.cols), stacks), stacks)}
 
 
-def _bad_size(rows, cols):
+def _bad_size(rows: object, cols: object) -> None:
     for name, value in (("rows", rows), ("cols", cols)):
         if type(value) is not int:
             raise WorldError(ErrorCode.TYPE_ERROR, f"init_board: {name} must be an integer, got {type(value).__name__}")

@@ -6,6 +6,7 @@ WorldError, what put/init_board raise.
 World errors never import clemcore; the game masters translate them in one place.
 """
 from enum import StrEnum
+from typing import Final, Literal, TypeAlias
 
 
 class ErrorCode(StrEnum):
@@ -63,7 +64,14 @@ _FAMILIES = {
     ErrorCode.PARSE_ERROR: "parse", ErrorCode.HARNESS_ERROR: "harness", **dict.fromkeys(PYTHON_CODES, "python"), **dict.fromkeys(WORLD_CODES, "world"),
     **dict.fromkeys(SANDBOX_CODES, "sandbox"), **dict.fromkeys(MISMATCH_CODES, "mismatch"),
 }
-SUCCESS_CATEGORY = "success"  # the category recorded for a build that equals its target
+SUCCESS_CATEGORY: Final = "success"  # the category recorded for a build that equals its target
+# a recorded category: the program's error, the mismatch, or SUCCESS_CATEGORY (as JSON: its string)
+Category: TypeAlias = ErrorCode | Literal["success"]
+
+
+def category_of(value: str) -> Category:
+    """A category read back from JSON (ValueError for an unknown one)."""
+    return SUCCESS_CATEGORY if value == SUCCESS_CATEGORY else ErrorCode(value)
 
 
 # what each category means, in plain words (one sentence each; the one place for these texts)
@@ -123,5 +131,5 @@ class WorldError(Exception):
         self.code = ErrorCode(code)
         self.message = message
 
-    def __reduce__(self):  # picklable across the worker boundary
+    def __reduce__(self) -> "tuple[type[WorldError], tuple[ErrorCode, str]]":  # picklable across the worker boundary
         return (WorldError, (self.code, self.message))

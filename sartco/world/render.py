@@ -2,6 +2,7 @@
 prompts, and the picture of a target beside a built board (SVG) for transcripts."""
 from __future__ import annotations
 
+from collections.abc import Sequence
 from html import escape
 
 from .board import Cells, parse_key
@@ -74,7 +75,7 @@ def _piece_svg(shape: str, color: str, x: float, y: float, w: float, h: float) -
     return f'<rect x="{x + 2:g}" y="{y + 2:g}" width="{w - 4:g}" height="{h - 4:g}" fill="none" stroke="{fill}" stroke-dasharray="3"/>'
 
 
-def _stack_svg(stack: list, x: float, y: float) -> list[str]:
+def _stack_svg(stack: Sequence[Sequence[str]], x: float, y: float) -> list[str]:
     """A stack in its cell: one horizontal slice per piece, the bottom piece in the bottom slice."""
     slice_h = (CELL - 4) / max(len(stack), 1)
     return [_piece_svg(shape, color, x + 2, y + CELL - 2 - (level + 1) * slice_h, CELL - 4, slice_h)
@@ -86,7 +87,7 @@ def _label_width(rows: int) -> float:
 
 
 def _grid_svg(cells: Cells, rows: int, cols: int, ox: float, title: str, marked: set[str],
-              stacks: dict[tuple, str]) -> list[str]:
+              stacks: dict[tuple[tuple[str, ...], ...], str]) -> list[str]:
     """One grid with its title, column numbers above and row numbers left, 1-based as the
     instructions count them ("the 8th row, 4th column"). Kept small, because a transcript embeds
     every picture and clemcore's HTML and LaTeX transcripts read each character of it: the cells
@@ -139,7 +140,7 @@ def diff_svg(target: Cells, built: Cells, rows: int = DEFAULT_ROWS, cols: int = 
     grid_w = _label_width(rows) + cols * CELL
     width, grids_h = 2 * grid_w + GAP + 2, 2 * FONT + 16 + rows * CELL
     height = grids_h + 2 * FONT + 34
-    stacks: dict[tuple, str] = {}
+    stacks: dict[tuple[tuple[str, ...], ...], str] = {}
     body = (_grid_svg(target, rows, cols, 0, "target", marked, stacks)
             + _grid_svg(built, rows, cols, grid_w + GAP, "built", marked, stacks) + _legend_svg(grids_h + FONT + 8))
     defs = "".join(f'<g id="{ref}">{"".join(_stack_svg(list(stack), 0, 0))}</g>' for stack, ref in stacks.items())

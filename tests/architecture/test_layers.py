@@ -4,6 +4,7 @@ never up, and no two packages import each other."""
 from __future__ import annotations
 
 import ast
+import re
 from pathlib import Path
 
 import pytest
@@ -49,41 +50,85 @@ def package_of(module: str) -> str:
     raise AssertionError(f"module {module} belongs to no layer of tests/architecture/test_layers.py")
 
 
-def modules() -> list[tuple[str, Path]]:
+def modules(root: Path = ROOT, bases: tuple[str, ...] = ("sartco", "games", "tools")) -> list[tuple[str, Path]]:
+    """(dotted name, file) of every module under `bases`; a package's __init__.py is `pkg.__init__`."""
     out = []
-    for base in ("sartco", "games", "tools"):
-        for path in sorted((ROOT / base).rglob("*.py")):
-            out.append((".".join(path.relative_to(ROOT).with_suffix("").parts), path))
+    for base in bases:
+        for path in sorted((root / base).rglob("*.py")):
+            out.append((".".join(path.relative_to(root).with_suffix("").parts), path))
     return out
 
 
-def imports_of(module: str, path: Path) -> list[tuple[int, str]]:
-    """(line, imported sartco module) of every import statement in the file."""
+def imports_of(module: str, path: Path, known: set[str], prefix: str = "sartco") -> list[tuple[int, str]]:
+    """(line, imported module of `known`) of every import statement in the file, at any depth
+    (inside functions, classes, `if` blocks too): `import a.b`, `from a import b`, `from . import
+    b`, `from .a import b`. A name imported from a package is its submodule when there is one
+    (`from . import named` is named.py, not the package), else the package's __init__. Only
+    modules whose name starts with `prefix` count."""
     tree = ast.parse(path.read_text(encoding="utf-8"))
-    here = module.split(".") if path.name == "__init__.py" else module.split(".")[:-1]
+    parts = module.split(".")
+    here = parts[:-1]  # the package a relative import starts from (a package's __init__: itself)
+
+    def node_of(name: str) -> str:
+        return name if name in known else f"{name}.__init__" if f"{name}.__init__" in known else ""
+
     out = []
     for node in ast.walk(tree):
         if isinstance(node, ast.ImportFrom):
-            if node.level:
-                base = here[:len(here) - node.level + 1]
-                name = ".".join(base + ([node.module] if node.module else []))
-            else:
-                name = node.module or ""
-            out.append((node.lineno, name))
+            base = here[:len(here) - node.level + 1] if node.level else []
+            package = ".".join(base + ([node.module] if node.module else []))
+            for alias in node.names:
+                out.append((node.lineno, node_of(f"{package}.{alias.name}") or node_of(package) or package))
         elif isinstance(node, ast.Import):
-            out += [(node.lineno, alias.name) for alias in node.names]
-    return [(line, name) for line, name in out if name == "sartco" or name.startswith("sartco.")]
+            out += [(node.lineno, node_of(alias.name) or alias.name) for alias in node.names]
+    return [(line, name) for line, name in out if name == prefix or name.startswith(prefix + ".")]
+
+
+def import_graph(root: Path = ROOT, bases: tuple[str, ...] = ("sartco", "games", "tools"),
+                 prefix: str = "sartco") -> dict[str, dict[str, int]]:
+    """module -> {imported module: line} over every import of every module."""
+    found = modules(root, bases)
+    known = {module for module, _ in found}
+    return {module: {name: line for line, name in reversed(imports_of(module, path, known, prefix))
+                     if name in known and name != module}
+            for module, path in found}
+
+
+def find_cycle(graph: dict[str, dict[str, int]]) -> list[str] | None:
+    """One import cycle (modules, the first repeated at the end), or None. A package's __init__
+    importing its own submodules and a submodule importing from its package's __init__ are both
+    edges: either side of such a pair is a real cycle."""
+    colour: dict[str, int] = {}
+    stack: list[str] = []
+
+    def visit(m: str) -> list[str] | None:
+        colour[m] = 1
+        stack.append(m)
+        for t in sorted(graph.get(m, ())):
+            if colour.get(t) == 1:
+                return stack[stack.index(t):] + [t]
+            if t not in colour and (found := visit(t)):
+                return found
+        stack.pop()
+        colour[m] = 2
+        return None
+
+    for m in sorted(graph):
+        if m not in colour and (cycle := visit(m)):
+            return cycle
+    return None
 
 
 def edges() -> list[tuple[str, str, str]]:
     """(importing package, imported package, 'file:line') for every import between packages."""
     out = []
-    for module, path in modules():
+    paths = dict(modules())
+    for module, targets in import_graph().items():
         mine = package_of(module)
-        for line, name in imports_of(module, path):
+        for name, line in targets.items():
             theirs = package_of(name)
             if theirs != mine and "sartco.__init__" not in (mine, theirs):
-                out.append((mine, theirs, f"{path.relative_to(ROOT)}:{line}"))
+                out.append((mine, theirs, f"{paths[module].relative_to(ROOT)}:{line}"))
     return out
 
 
@@ -97,8 +142,8 @@ def test_containers_hold_no_code():
     (a module by the container's name, which no layer would check) appears nowhere."""
     tree = ast.parse((ROOT / "sartco/clem/__init__.py").read_text(encoding="utf-8"))
     assert all(isinstance(node, ast.Expr) and isinstance(node.value, ast.Constant) for node in tree.body)
-    bare = [f"{path.relative_to(ROOT)}:{line}" for module, path in modules()
-            for line, name in imports_of(module, path) if name == "sartco.clem"]
+    bare = [f"{module}: line {line}" for module, targets in import_graph().items()
+            for name, line in targets.items() if name == "sartco.clem.__init__"]
     assert not bare, "imports of the container sartco.clem (name the package):\n" + "\n".join(bare)
 
 
@@ -109,41 +154,38 @@ def test_imports_point_down():
 
 
 def test_no_cycle_between_modules():
-    graph: dict[str, set[str]] = {}
-    for module, path in modules():
-        targets = set()
-        for _, name in imports_of(module, path):
-            # `from sartco.x import y` may name a module y or a member of x: take the module
-            targets.add(name)
-        graph[module] = targets
-    known = set(graph)
+    cycle = find_cycle(import_graph())
+    assert cycle is None, "import cycle: " + " -> ".join(cycle or [])
 
-    def resolve(name: str) -> str | None:
-        while name and name not in known:
-            name = name.rpartition(".")[0]
-        return name or None
 
-    adj = {m: {r for t in ts if (r := resolve(t)) and r != m and not m.startswith(r + ".")} for m, ts in graph.items()}
-    # a package's __init__ importing its own submodules is not a cycle with them
-    adj = {m: {t for t in ts if not (m.endswith("__init__") or t + ".__init__" == m)} for m, ts in adj.items()}
-    colour: dict[str, int] = {}
-    stack: list[str] = []
+def _plant(root: Path, files: dict[str, str]) -> None:
+    for name, text in files.items():
+        (root / name).parent.mkdir(parents=True, exist_ok=True)
+        (root / name).write_text(text, encoding="utf-8")
 
-    def visit(m: str) -> list[str] | None:
-        colour[m] = 1
-        stack.append(m)
-        for t in sorted(adj.get(m, ())):
-            if colour.get(t) == 1:
-                return stack[stack.index(t):] + [t]
-            if t not in colour and (found := visit(t)):
-                return found
-        stack.pop()
-        colour[m] = 2
-        return None
 
-    for m in sorted(adj):
-        if m not in colour and (cycle := visit(m)):
-            pytest.fail("import cycle: " + " -> ".join(cycle))
+@pytest.mark.parametrize("closing", [
+    "from . import a\n",                                   # the form the old check read as the package
+    "def later():\n    from . import a\n    return a\n",   # inside a function
+    "from .a import VALUE\n",
+    "import plant.a\n",
+    "from plant import a\n",
+])
+def test_a_planted_cycle_is_found(tmp_path, closing):
+    """The checker run on a package written here: a imports b by `from . import b`, b imports a
+    back in each import form; every one closes a cycle the check reports."""
+    _plant(tmp_path, {"plant/__init__.py": "", "plant/a.py": "from . import b\nVALUE = 1\n", "plant/b.py": closing})
+    cycle = find_cycle(import_graph(tmp_path, ("plant",), prefix="plant"))
+    assert cycle is not None and set(cycle) == {"plant.a", "plant.b"}, cycle
+
+
+def test_a_name_of_the_package_is_no_edge_to_a_module(tmp_path):
+    """`from . import VALUE` (a name of the package's __init__, no module) is an edge to the
+    __init__, not to some submodule: no cycle between a and b here."""
+    _plant(tmp_path, {"plant/__init__.py": "VALUE = 1\n", "plant/a.py": "from . import b\n",
+                      "plant/b.py": "from . import VALUE\n"})
+    graph = import_graph(tmp_path, ("plant",), prefix="plant")
+    assert graph["plant.b"] == {"plant.__init__": 1} and find_cycle(graph) is None
 
 
 def test_largest_module_is_small():
@@ -151,3 +193,13 @@ def test_largest_module_is_small():
                    reverse=True)
     big = [f"{p}: {n} lines" for n, p in sizes if n >= 300]
     assert not big, "modules of 300 lines or more:\n" + "\n".join(big)
+
+
+def test_named_test_files_exist():
+    """A test file the code or the docs name (`tests/.../test_x.py`) is there: none goes stale
+    when tests move."""
+    named = re.compile(r"\btests/[\w/]+\.py\b")
+    texts = [path for _, path in modules()] + sorted((ROOT / "docs").glob("*.md")) + [ROOT / "README.md"]
+    stale = [f"{path.relative_to(ROOT)}: {name}" for path in texts
+             for name in sorted(set(named.findall(path.read_text(encoding="utf-8")))) if not (ROOT / name).is_file()]
+    assert not stale, "test files named but missing:\n" + "\n".join(stale)

@@ -11,7 +11,7 @@ from play_helpers import REPO
 from sartco.clem.core.parsing import ParseError
 from sartco.clem.describe.dialogue import parse_builder_answer, parse_review, settings_of
 from sartco.clem.describe.dialogue_answers import correction_text
-from sartco.clem.describe.turns import BuilderTurn, Dialogue, DialogueLog, State
+from sartco.clem.describe.turns import BuilderTurn, Dialogue, DialogueLog, Said, State
 from sartco.follower import emit
 from sartco.follower.correct import apply_correction, pieces
 from sartco.program import execute_many
@@ -95,7 +95,9 @@ def test_the_dialogue_moves_only_along_its_transitions():
         d.ask("Which row?")   # the builder cannot ask before the instruction
     d.instruct("Put a red nut in the corner.")
     d.ask("Which corner?")
-    assert d.state is State.ANSWER and d.left("question") == 0
+    assert d.state is State.ANSWER and (d.left(Said.QUESTION), d.left(Said.CORRECTION)) == (0, 1)
+    with pytest.raises(ValueError, match="only questions and corrections are limited"):
+        d.left(Said.ANSWER)   # no budget of answers: never counted as corrections
     with pytest.raises(RuntimeError):
         d.build(record())     # the describer owes an answer first
     d.answer("The top left one.")
@@ -107,8 +109,12 @@ def test_the_dialogue_moves_only_along_its_transitions():
     assert d.state is State.OVER and d.correction is None
     with pytest.raises(RuntimeError):
         d.done()
-    assert [e["kind"] for e in d.log.events] == ["instruction", "question", "answer", "correction"]
-    assert (d.log.count("question"), d.log.count("correction"), d.log.describer_words) == (1, 1, 7 + 4 + 10)
+    # the log's kinds as interactions.json holds them: the Said values, written as their strings
+    assert json.loads(json.dumps(d.log.to_json()))["events"] == [
+        {"kind": "instruction", "text": "Put a red nut in the corner.", "build": 0},
+        {"kind": "question", "text": "Which corner?", "build": 0}, {"kind": "answer", "text": "The top left one.", "build": 0},
+        {"kind": "correction", "text": "Remove the red nut in the 1st row, 1st column.", "build": 1}]
+    assert (d.log.count(Said.QUESTION), d.log.count(Said.CORRECTION), d.log.describer_words) == (1, 1, 7 + 4 + 10)
 
 
 def test_a_build_without_code_is_not_reviewed_and_an_unreadable_describer_ends_or_skips_the_build():

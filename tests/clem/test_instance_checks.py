@@ -9,7 +9,8 @@ from pathlib import Path
 
 import pytest
 
-from sartco.clem.core.benchmark import EPISODE_FIELDS, InstanceFileError, check_instances, clem_run_options
+from sartco.clem.core.benchmark import (EPISODE_FIELDS, InstanceFileError, RunOptions, check_instances, clem_run_options,
+                                        resume_selector, run_options)
 
 REPO = Path(__file__).resolve().parents[2]
 GAME = REPO / "games" / "cobot_instruct"
@@ -74,10 +75,15 @@ def test_good_file_plays(game_copy):
 
 def benchmark_of(game: str):
     import importlib.util
+    import inspect
+
+    from clemcore.clemgame.benchmark import is_game_benchmark
+
     spec = importlib.util.spec_from_file_location(f"{game}_master", REPO / "games" / game / "master.py")
     master = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(master)
-    return next(v for k, v in vars(master).items() if k.endswith("Benchmark"))
+    [(_, benchmark)] = inspect.getmembers(master, is_game_benchmark)  # the one class clemcore plays
+    return benchmark
 
 
 @pytest.mark.parametrize("game, committed", [
@@ -127,3 +133,17 @@ def test_no_experiments(tmp_path, data):
 def test_clem_run_options(argv, expected):
     run = clem_run_options(argv)
     assert (run is not None, run and run.experiment) == expected
+
+
+def test_resume_options_travel_in_the_game_spec(monkeypatch):
+    """`sartco resume` hands clemcore's `run` a selector with its options; clemcore unifies it with
+    the registered entry, and the benchmark built from that spec reads them there (no global)."""
+    from clemcore.clemgame import GameRegistry
+
+    monkeypatch.chdir(REPO)
+    registry = GameRegistry.from_directories_and_cwd_files()
+    [spec] = registry.get_game_specs_that_unify_with(resume_selector("cobot_instruct", Path("res"), 3), verbose=False)
+    assert spec.game_path == str(GAME) and run_options(spec, ["pytest"]) == RunOptions(Path("res"), None, 3)
+    plain = registry.get_game_specs_that_unify_with("cobot_instruct", verbose=False)[0]
+    assert run_options(plain, ["pytest"]) is None
+    assert run_options(plain, ["clem", "run", "-g", "x", "-e", "abc", "-r", "out"]) == RunOptions(Path("out"), "abc")

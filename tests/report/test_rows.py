@@ -6,7 +6,7 @@ import shutil
 import typing
 
 from sartco.report.rows import EpisodeRow
-from sartco.report.tables import collect
+from sartco.report.rows import collect
 
 from report_helpers import write_results
 

@@ -3,30 +3,35 @@ master its scorer (`scorer_class`: the master also runs it for the transcript's 
 sartco.clem.core.card); scoring also writes the full-size board pictures the transcripts link to
 (sartco.clem.core.pictures).
 
-clemcore takes the one GameBenchmark subclass it finds among a master.py's module members, so
-import this module, not the class, into a master.py:
+clemcore plays the one GameBenchmark subclass it finds among a master.py's module members, so
+BuildBenchmark is a base beside GameBenchmark, not a subclass of it: a master.py imports it by
+name and names both bases.
 
-    from sartco.clem.core import benchmark
+    from pathlib import Path
+
+from clemcore.clemgame import GameSpec
+    from sartco.clem.core.benchmark import BuildBenchmark, json_fields
 
     class MyGameMaster(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameMaster):
         scorer_class = MyScorer
 
-    class MyGameBenchmark(benchmark.BuildBenchmark):
+    class MyGameBenchmark(BuildBenchmark, GameBenchmark):
         master_class = MyGameMaster
-        episode_fields = benchmark.json_fields(MyEpisode)   # a TypedDict of sartco.episode
+        episode_fields = json_fields(MyEpisode)   # a TypedDict of sartco.episode
 
 Instance files are checked up front. `clem run` loads the models, then the game (this class),
 then the instance file, and plays; it hands the game neither the instance rows before playing
 nor the `-e` experiment name, and logs any exception with a traceback and goes on (an unknown
-experiment is "0 rows", exit 0). So under `clem run` the constructor calls `check_instances` with
-the instance file (`instance_file`: the one clemgame.json or `-i` names) and the `-e` experiment
-(`clem_run_options`, the one reader of clem's command line: clemcore hands a game no -e), and
-before any model is asked stops with one line naming the file, the experiment and the field
-(exit code 2): missing or truncated file, no experiments, an episode without a field the master
-reads or with a field of the wrong JSON type, a bad value (instance_values.py: board size, target
-shapes, colours, cells and buildability, empty turns, unknown board kinds, tasks, modes, variants),
-an unknown experiment name (with the list). `sartco check-instances FILE` (sartco.clem.core.check)
-makes the same check without clem.
+experiment is "0 rows", exit 0). So when the game is built for a run (`run_options`: `sartco
+resume` passes its options in the game spec; under `clem run` they are read from clem's command
+line, the one place that reads it: clemcore hands a game neither -e nor -r) the constructor calls
+`check_instances` with the instance file (`instance_file`: the one clemgame.json or `-i` names)
+and the `-e` experiment, and before any model is asked stops with one line naming the file, the
+experiment and the field (exit code 2): missing or truncated file, no experiments, an episode
+without a field the master reads or with a field of the wrong JSON type, a bad value
+(instance_values.py: board size, target shapes, colours, cells and buildability, empty turns,
+unknown board kinds, tasks, modes, variants), an unknown experiment name (with the list).
+`sartco check-instances FILE` (sartco.clem.core.check) makes the same check without clem.
 """
 from __future__ import annotations
 
@@ -35,8 +40,11 @@ import json
 import os
 import sys
 import typing
+from typing import Any
 
-from clemcore.clemgame import GameBenchmark
+from pathlib import Path
+
+from clemcore.clemgame import GameSpec
 
 from sartco.episode import PlayedEpisode
 
@@ -115,19 +123,44 @@ def check_instances(path: str, fields, experiment: str | None = None) -> int:
     return sum(len(e["game_instances"]) for e in experiments if experiment in (None, e["name"]))
 
 
-class ClemRun(typing.NamedTuple):
-    experiment: str | None  # clem run -e: the one experiment to play, None for all
-    results_dir: str        # clem run -r
+class RunOptions(typing.NamedTuple):
+    """What a benchmark is built to play (run.json's session, sartco.clem.core.provenance)."""
+    results_dir: Path              # clem run -r / sartco resume -r
+    experiment: str | None = None  # clem run -e: the one experiment to play, None for all
+    resume_episodes: int | None = None  # sartco resume: the episodes it plays again; None: a clem run
 
 
-def clem_run_options(argv: list[str] | None = None) -> ClemRun | None:
+# the game spec entry through which `sartco resume` (sartco.clem.tooling.resume) hands its options
+# to the benchmark clemcore builds: {"results_dir": str, "episodes": int}
+RESUME_KEY = "sartco_resume"
+
+
+def resume_selector(game_name: str, results_dir: Path, episodes: int) -> GameSpec:
+    """The game selector `sartco resume` gives clemcore's `run`: the game entry plus RESUME_KEY
+    (clemcore unifies it with the registered entry and builds the benchmark from the result)."""
+    return GameSpec(game_name=game_name, allow_underspecified=True,
+                    **{RESUME_KEY: {"results_dir": str(results_dir), "episodes": episodes}})
+
+
+def run_options(game_spec: GameSpec, argv: list[str] | None = None) -> RunOptions | None:
+    """The run a benchmark is built for: `sartco resume`'s options from the game spec, else `clem
+    run`'s from clem's command line (clem_run_options); None when neither (clem score, sartco
+    check-instances, the gym env)."""
+    resume = getattr(game_spec, RESUME_KEY, None)
+    if resume is not None:
+        return RunOptions(Path(resume["results_dir"]), None, int(resume["episodes"]))
+    return clem_run_options(argv)
+
+
+def clem_run_options(argv: list[str] | None = None) -> RunOptions | None:
     """`clem run`'s -e and -r, read from clem's command line (`argv`, default sys.argv); None when
     this process is not `clem run`.
 
     The one place the package reads the command line, and why it must: clemcore 3.7's `cli.run`
     keeps both options to itself (-e becomes a row filter applied after the game is built, -r the
-    folder of its own callbacks) and hands a GameBenchmark only the game spec (whose `instances`
-    -i has already set). An unknown -e would otherwise play "0 rows" and exit 0."""
+    folder of its own callbacks, whose list a game cannot extend) and hands a GameBenchmark only
+    the game spec (whose `instances` -i has already set). An unknown -e would otherwise play
+    "0 rows" and exit 0."""
     argv = sys.argv if argv is None else argv
     if not argv or os.path.basename(argv[0]) not in ("clem", "clem.exe"):
         return None
@@ -139,7 +172,24 @@ def clem_run_options(argv: list[str] | None = None) -> ClemRun | None:
         args, _ = parser.parse_known_args(argv[1:])
     except SystemExit:  # clem's own parser reports the command line's mistakes
         return None
-    return ClemRun(args.experiment_name, args.results_dir) if args.command == "run" else None
+    return RunOptions(Path(args.results_dir), args.experiment_name) if args.command == "run" else None
+
+
+def start_run(game_spec: GameSpec, run: RunOptions, fields) -> provenance.RunRecorder:
+    """Check the instance file of a run before any model is asked (a problem: one line on stderr
+    and SystemExit(2), not an Exception, which clemcore's loop would log and go past) and make
+    the recorder of its run.json."""
+    path = instance_file(game_spec)
+    resuming = run.resume_episodes is not None
+    try:
+        selected = check_instances(path, fields, run.experiment)
+    except InstanceFileError as error:
+        print(f"{'sartco resume' if resuming else 'clem run'} -g {game_spec.game_name}: {error}", file=sys.stderr)
+        raise SystemExit(2) from None
+    if run.resume_episodes is not None:  # resume: the episodes it plays again, not the file's
+        selected = run.resume_episodes
+    return provenance.RunRecorder(game_spec.game_name, run.results_dir, Path(path), run.experiment, selected,
+                                  resume=resuming)
 
 
 def instance_file(game_spec) -> str:
@@ -149,29 +199,21 @@ def instance_file(game_spec) -> str:
     return os.path.join(game_spec.game_path, "in", name if name.endswith(".json") else f"{name}.json")
 
 
-class BuildBenchmark(GameBenchmark):
-    master_class = None   # a DialogueGameMaster subclass: (game_spec, experiment, player_models); its
-                          # `scorer_class`: a GameScorer subclass (game_name, experiment, game_instance)
-    episode_fields = EPISODE_FIELDS  # field -> JSON type every episode of the instance file must have
+class BuildBenchmark:
+    """The base of a game's GameBenchmark (see the module doc): `class X(BuildBenchmark, GameBenchmark)`."""
+    master_class: Any   # a DialogueGameMaster subclass: (game_spec, experiment, player_models); its
+                        # `scorer_class`: a GameScorer subclass (game_name, experiment, game_instance)
+    episode_fields: dict[str, type] = EPISODE_FIELDS  # field -> JSON type every episode must have
+    game_spec: GameSpec  # set by GameBenchmark, the other base
+    game_name: str
 
-    def __init__(self, game_spec):
-        super().__init__(game_spec)
-        self.recorder = None  # writes run.json (sartco.clem.core.provenance) under clem run and sartco resume
-        run, resuming = clem_run_options(), provenance.RESUMING
-        if run or resuming:
-            experiment = run.experiment if run else None
-            path = instance_file(game_spec)
-            try:
-                selected = check_instances(path, self.fields_of, experiment)
-            except InstanceFileError as error:
-                print(f"{'sartco resume' if resuming else 'clem run'} -g {game_spec.game_name}: {error}", file=sys.stderr)
-                raise SystemExit(2) from None  # not an Exception: clem's loop does not log and go on
-            if resuming:
-                results_dir, selected = resuming
-            else:
-                results_dir = run.results_dir
-            self.recorder = provenance.RunRecorder(game_spec.game_name, results_dir, path, experiment, selected,
-                                                   resume=bool(resuming))
+    def __init__(self, game_spec: GameSpec) -> None:
+        super().__init__(game_spec)  # type: ignore[call-arg]  # GameBenchmark's, next in the game class's MRO
+        # writes run.json (sartco.clem.core.provenance) under clem run and sartco resume
+        self.recorder: provenance.RunRecorder | None = None
+        run = run_options(game_spec)
+        if run is not None:
+            self.recorder = start_run(game_spec, run, self.fields_of)
 
     @classmethod
     def fields_of(cls, episode: dict) -> dict:

@@ -17,10 +17,11 @@ records (its answers are escaped before they get here) are the same as before.
 from __future__ import annotations
 
 from dataclasses import dataclass, field, fields
+from typing import cast
 
 from sartco.episode import BUILD_KEY
 from sartco.text import escape
-from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, SUCCESS_CATEGORY, ErrorCode, category_family
+from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, SUCCESS_CATEGORY, Category, ErrorCode, category_family, category_of
 from sartco.world.render import diff_svg, differing_cells
 
 from .outcomes import HarnessFault, set_attempts_outcome, set_share_outcome
@@ -42,13 +43,13 @@ class BuildRecord:
     builder_code: str                 # what the builder wrote (all turns joined)
     program: str                      # what was executed: init_board + given code + builder code
     ok: bool                          # the program ran to the end
-    error: str | None                 # ErrorCode value when the program failed (or parse_error)
+    error: ErrorCode | None           # when the program failed (or parse_error, harness_error)
     message: str
     cells: dict                       # the board built (so far, when the program failed)
     target: dict
     puts: int
     es: int                           # 1 when cells == target and ok
-    category: str                     # error, mismatch category, or "success"
+    category: Category                # the error, the mismatch category, or SUCCESS_CATEGORY
     precision: float
     recall: float
     f1: float
@@ -58,7 +59,9 @@ class BuildRecord:
 
     def to_json(self) -> dict:
         """The record as JSON data: a copy with fresh lists for the boards' stacks, as
-        dataclasses.asdict makes it, at a tenth of its cost (every build of every episode is recorded)."""
+        dataclasses.asdict makes it, at a tenth of its cost (every build of every episode is
+        recorded); `error` and `category` stay members of str enums, which JSON writes as their
+        strings."""
         data = {f.name: getattr(self, f.name) for f in fields(self)}
         for board in ("cells", "target"):
             data[board] = {key: [list(piece) for piece in stack] for key, stack in data[board].items()}
@@ -72,7 +75,10 @@ class BuildRecord:
     @classmethod
     def from_json(cls, data: dict) -> "BuildRecord":
         names = {f.name for f in fields(cls)}
-        return cls(**{k: v for k, v in data.items() if k in names})
+        values = {k: v for k, v in data.items() if k in names}
+        values["error"] = None if values.get("error") is None else ErrorCode(values["error"])
+        values["category"] = category_of(values["category"])
+        return cls(**values)
 
     @property
     def family(self) -> str:
@@ -133,9 +139,13 @@ def build_many(jobs: list[BuildJob]) -> list[BuildRecord]:
     out = []
     for job, program, ex in zip(jobs, programs, executions):
         cmp = judge(ex.ok, ex.error, ex.cells, job.target)
-        error = None if ex.error is None else str(ErrorCode(ex.error))  # sartco.program: set whenever not ok
+        error = None if ex.error is None else ErrorCode(ex.error)  # sartco.program: set whenever not ok
         es = int(cmp.es)
-        category = SUCCESS_CATEGORY if es else str(ErrorCode(cmp.category))  # the error unless the program ran
+        category: Category = SUCCESS_CATEGORY  # the error unless the program built the target
+        if not es:
+            if cmp.category is None:
+                raise ValueError("sartco.program.judge: a failed build without a category")
+            category = ErrorCode(cmp.category)
         out.append(BuildRecord(
             builder_code=job.builder_code, program=program, ok=bool(ex.ok), error=error, message=escape(ex.message or ""),
             cells=ex.cells, target=job.target, puts=int(ex.puts), es=es, category=category,
@@ -160,8 +170,8 @@ def parse_failure(target: dict, message: str, *, turn_codes: list[str] | None = 
     error=HARNESS_ERROR, because the harness failed): nothing was executed. Texts escaped."""
     turn_codes = [escape(code) for code in turn_codes or []]
     return BuildRecord(
-        builder_code="\n".join(turn_codes), program="", ok=False, error=str(error), message=escape(message),
-        cells={}, target=target, puts=0, es=0, category=str(error),
+        builder_code="\n".join(turn_codes), program="", ok=False, error=error, message=escape(message),
+        cells={}, target=target, puts=0, es=0, category=error,
         precision=0.0, recall=0.0, f1=0.0, rows=rows, cols=cols, turn_codes=turn_codes,
     )
 
@@ -219,7 +229,9 @@ def build_answers_many(items: list[tuple[dict, list[str]]]) -> list[BuildRecord]
             places.append(k)
     for k, record in zip(places, build_many(jobs)):
         out[k] = record
-    return out
+    if any(record is None for record in out):
+        raise RuntimeError("build_answers_many: an item got no record")
+    return cast("list[BuildRecord]", out)
 
 
 def record_build(game_master, attempts: list[BuildRecord], *, final: bool, shown: bool = False,

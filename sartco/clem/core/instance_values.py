@@ -109,7 +109,7 @@ class InstanceGenerator(GameInstanceGenerator):
     """The games' GameInstanceGenerator: it writes no instance file without episodes (on_generate
     sets `source`, the input that the line names)."""
 
-    source = "the generator's input"
+    source: str | Path = "the generator's input"
 
     def store_file(self, data, file_name: str, sub_dir: str | None = None) -> str:
         if sub_dir == "in":

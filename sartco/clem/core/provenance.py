@@ -33,9 +33,6 @@ from pathlib import Path
 from sartco.settings import CHECKOUT, workspace
 
 RUN_FILE = "run.json"
-# set by `sartco resume` (sartco.clem.tooling.resume) while it plays: (results folder, episodes selected);
-# the game then records a session with resume = true
-RESUMING: tuple[Path, int] | None = None
 SECRET = re.compile(r"key|token|secret|password|passwd|auth|credential", re.IGNORECASE)
 
 

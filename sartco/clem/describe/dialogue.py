@@ -41,7 +41,7 @@ from sartco.instances.templates import render
 from sartco.world.render import grid_explanation, grid_text
 
 from .describer import DescribeScorer, label, text_under
-from .turns import BuilderTurn, DialogueLog
+from .turns import BuilderTurn, DialogueLog, Said
 
 MODES = DIALOGUE_MODES
 MODE_FIELD, QUESTIONS_FIELD, CORRECTIONS_FIELD = "mode", "questions", "corrections"
@@ -163,7 +163,7 @@ class DialogueScorer(DescribeScorer):
             ES_AT_1: es[0] if played else nan, ES_AT_N: es[-1] if played else nan,
             CELL_F1_AT_1: builds[0].f1 if played else nan, CELL_F1_AT_N: builds[-1].f1 if played else nan,
             FIRST_SUCCESS_ROUND: es.index(1) if 1 in es else nan,
-            QUESTIONS_ASKED: log.count("question"), CORRECTIONS_SENT: log.count("correction"),
+            QUESTIONS_ASKED: log.count(Said.QUESTION), CORRECTIONS_SENT: log.count(Said.CORRECTION),
             DESCRIBER_WORDS: log.describer_words,
         }
         for name in DIALOGUE_SCORES:

@@ -26,7 +26,7 @@ from sartco.follower.correct import apply_correction, correction_steps, pieces
 from sartco.instances.templates import render
 
 from .erring_dialogue import ErringBuilder, ErringDescriber
-from .turns import DONE, BuilderTurn, Dialogue, State
+from .turns import DONE, BuilderTurn, Dialogue, Said, State
 
 
 # --- the mock describer -----------------------------------------------------------------------------
@@ -73,7 +73,7 @@ class BuilderView:
 def builder_view(episode: dict, dialogue: Dialogue) -> BuilderView:
     d = dialogue
     return BuilderView(episode["task"], episode["given_code"], episode["rows"], episode["cols"], d.instruction or "",
-                       list(d.answers), d.correction, d.builds[-1].cells if d.builds else None, d.left("question"))
+                       list(d.answers), d.correction, d.builds[-1].cells if d.builds else None, d.left(Said.QUESTION))
 
 
 def _question(problem: str) -> str:

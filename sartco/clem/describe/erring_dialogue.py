@@ -30,7 +30,7 @@ from sartco.follower.regular import arrange
 from sartco.instances.templates import render
 from sartco.world import COLORS
 
-from .turns import DONE, BuilderTurn, Dialogue, State
+from .turns import DONE, BuilderTurn, Dialogue, Said, State
 
 _SENTENCE = re.compile(r"(?<=[.!?])\s+")
 _COLOUR_LIST = re.compile(r"colors:\s*\[[^\]]*\]")
@@ -106,7 +106,7 @@ class ErringBuilder:
     def turn(self) -> BuilderTurn:
         e, view = self.episode, self.dialogue  # what it heard; the cells its own last program built
         rows, cols, builds = e["rows"], e["cols"], len(view.builds)
-        questions_left = view.left("question")
+        questions_left = view.left(Said.QUESTION)
         if view.correction is not None and view.builds:
             try:
                 removals, additions = read_correction(view.correction, rows, cols)

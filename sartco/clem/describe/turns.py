@@ -1,8 +1,9 @@
 """cobot_describe's dialogue as a state machine: whose turn it is (State), what was said so far
 (DialogueLog, logged under DIALOGUE_KEY for the scorer) and the transitions the game master
 makes as the dialogue goes on (Dialogue's methods: instruct, ask, answer, build, done, correct,
-fail); a builder's answer as read (BuilderTurn: a question or code). The built-in players read
-what they heard from the Dialogue (sartco.clem.describe.dialogue_answers).
+fail); a builder's answer as read (BuilderTurn: a question or code); the kinds of what was said
+(Said: the log's `kind` values). The built-in players read what they heard from the Dialogue
+(sartco.clem.describe.dialogue_answers).
 
     INSTRUCTION --instruct--> BUILD --ask--> ANSWER --answer--> BUILD
     BUILD --build--> REVIEW (corrections left, the answer held code) | OVER
@@ -45,23 +46,35 @@ class BuilderTurn(NamedTuple):
         return self.text if self.move is Move.QUESTION else fenced(self.text)
 
 
+class Said(StrEnum):
+    """The kind of a logged turn (DialogueLog's events' `kind`, as written to interactions.json)."""
+    INSTRUCTION = "instruction"
+    QUESTION = "question"
+    ANSWER = "answer"
+    CORRECTION = "correction"
+    DONE = "done"
+    # a describer's answer that could not be read, by the state it was given in (Dialogue.fail)
+    NO_INSTRUCTION = "no_instruction"
+    NO_ANSWER = "no_answer"
+    NO_REVIEW = "no_review"
+
+
 @dataclass
 class DialogueLog:
-    """What was said after the instruction, in order: {"kind": question | answer | review |
-    correction | done | no_review, "text", "build": builds so far}."""
+    """What was said, in order: {"kind": a Said value, "text", "build": builds so far}."""
     mode: str
     questions: int
     corrections: int
     events: list[dict] = field(default_factory=list)
     describer_words: int = 0
 
-    def add(self, kind: str, text: str | None, builds: int, *, describer: bool = False) -> None:
+    def add(self, kind: Said, text: str | None, builds: int, *, describer: bool = False) -> None:
         self.events.append({"kind": kind, "text": text, "build": builds})
         if describer and text:
             self.describer_words += len(text.split())
 
-    def count(self, kind: str) -> int:
-        return sum(1 for e in self.events if e["kind"] == kind)
+    def count(self, kind: Said) -> int:
+        return sum(1 for event in self.events if event["kind"] == kind)
 
     def to_json(self) -> dict:
         return asdict(self)
@@ -76,6 +89,10 @@ class State(StrEnum):
     OVER = "over"                 # the last build is the episode's result
 
 
+# the states whose describer answer may be unreadable, and what the log then says (Dialogue.fail)
+UNREAD = {State.INSTRUCTION: Said.NO_INSTRUCTION, State.ANSWER: Said.NO_ANSWER, State.REVIEW: Said.NO_REVIEW}
+
+
 @dataclass
 class Dialogue:
     """What has been said in an episode so far and whose turn it is: the game master moves it
@@ -88,10 +105,12 @@ class Dialogue:
     correction: str | None = None      # the correction the builder has not answered yet
     builds: list[BuildRecord] = field(default_factory=list)
 
-    def left(self, kind: str) -> int:
-        """Questions ("question") or corrections left."""
-        limit = self.log.questions if kind == "question" else self.log.corrections
-        return limit - self.log.count(kind)
+    def left(self, kind: Said) -> int:
+        """Questions (Said.QUESTION) or corrections (Said.CORRECTION) left."""
+        limits = {Said.QUESTION: self.log.questions, Said.CORRECTION: self.log.corrections}
+        if kind not in limits:
+            raise ValueError(f"dialogue: only questions and corrections are limited, not {kind!r}")
+        return limits[kind] - self.log.count(kind)
 
     def _move(self, allowed: tuple[State, ...], to: State) -> None:
         if self.state not in allowed:
@@ -102,22 +121,22 @@ class Dialogue:
         """INSTRUCTION -> BUILD: the describer's instruction."""
         self._move((State.INSTRUCTION,), State.BUILD)
         self.instruction = text
-        self.log.add("instruction", text, 0, describer=True)
+        self.log.add(Said.INSTRUCTION, text, 0, describer=True)
 
     def ask(self, question: str) -> None:
         """BUILD -> ANSWER: the builder asks."""
         self._move((State.BUILD,), State.ANSWER)
-        self.log.add("question", question, len(self.builds))
+        self.log.add(Said.QUESTION, question, len(self.builds))
 
     def answer(self, text: str) -> None:
         """ANSWER -> BUILD: the describer answers the question."""
         self._move((State.ANSWER,), State.BUILD)
         self.answers.append(text)
-        self.log.add("answer", text, len(self.builds), describer=True)
+        self.log.add(Said.ANSWER, text, len(self.builds), describer=True)
 
     def build(self, record: BuildRecord) -> None:
         """BUILD -> REVIEW while corrections are left and the answer held code, else OVER."""
-        reviewed = record.error != ErrorCode.PARSE_ERROR and self.left("correction") > 0
+        reviewed = record.error != ErrorCode.PARSE_ERROR and self.left(Said.CORRECTION) > 0
         self._move((State.BUILD,), State.REVIEW if reviewed else State.OVER)
         self.builds.append(record)
         self.answers, self.correction = [], None
@@ -125,16 +144,17 @@ class Dialogue:
     def done(self) -> None:
         """REVIEW -> OVER: the review says Done; the board stands."""
         self._move((State.REVIEW,), State.OVER)
-        self.log.add("done", DONE, len(self.builds))
+        self.log.add(Said.DONE, DONE, len(self.builds))
 
     def correct(self, correction: str) -> None:
         """REVIEW -> BUILD: the describer's correction."""
         self._move((State.REVIEW,), State.BUILD)
         self.correction = correction
-        self.log.add("correction", correction, len(self.builds), describer=True)
+        self.log.add(Said.CORRECTION, correction, len(self.builds), describer=True)
 
     def fail(self, reason: str) -> None:
         """The describer's answer could not be read: OVER when a board stands, else BUILD (the
         master records a build without code for the builder)."""
-        self.log.add(f"no_{self.state.value}", reason, len(self.builds))
-        self._move((State.INSTRUCTION, State.ANSWER, State.REVIEW), State.OVER if self.builds else State.BUILD)
+        unread = self.state
+        self._move(tuple(UNREAD), State.OVER if self.builds else State.BUILD)
+        self.log.add(UNREAD[unread], reason, len(self.builds))

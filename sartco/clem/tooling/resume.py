@@ -22,6 +22,7 @@ import shutil
 from pathlib import Path
 
 from sartco.clem.core import provenance
+from sartco.clem.core.benchmark import resume_selector
 from sartco.clem.core.outcomes import NO_ANSWER
 from sartco.episode import HARNESS_REASON
 from sartco.errors import UserError
@@ -95,16 +96,15 @@ def run(args: argparse.Namespace) -> int:
         for p in replay:  # a stale scores.json or error.json of the failed play must not survive it
             shutil.rmtree(episode_folder(game_dir, p), ignore_errors=True)
         wanted = {(p["experiment"], p["game_id"]) for p in replay}
-        provenance.RESUMING = (args.results, len(replay))
+        # the game's benchmark records this session in run.json as a resume of len(replay) episodes
+        selector = resume_selector(args.game, args.results, len(replay))
         try:
-            clem_cli.run(args.game, ModelSpec.from_strings(args.models), gen_args=gen_args,
+            clem_cli.run(selector, ModelSpec.from_strings(args.models), gen_args=gen_args,
                          instances_filename=str(instance_path.with_suffix("")), results_dir_path=args.results,
                          batch_size=args.batch_size,
                          instances_filter=lambda row: (row["experiment"]["name"], row["game_instance"]["game_id"]) in wanted)
         except SystemExit:  # clemcore exits 1 after logging an episode's exception; the check below tells
             pass
-        finally:
-            provenance.RESUMING = None
     files = [episode_folder(game_dir, p) / "interactions.json" for p in replay + rescore]
     files = [f for f in files if f.is_file()]
     if files:

@@ -1,0 +1,16 @@
+"""The type of a stand-in module (modules.py makes them, attributes.py reads their members).
+
+Its own module so that the rule of `obj.name` (attributes.py) knows a stand-in module without
+importing the stand-ins, which use that rule themselves (named.py: operator.attrgetter)."""
+from __future__ import annotations
+
+
+class Module:
+    """A stand-in module: its members are plain attributes (read through runtime's $attr)."""
+
+    def __init__(self, name: str, members: dict[str, object]) -> None:
+        self.__dict__.update(members)
+        self.__dict__["__name__"] = name
+
+    def __repr__(self) -> str:
+        return f"<module {self.__dict__['__name__']!r} (sandbox stand-in)>"
