@@ -118,10 +118,11 @@ def check_instances(path: str, fields, experiment: str | None = None) -> int:
 class ClemRun(typing.NamedTuple):
     experiment: str | None  # clem run -e: the one experiment to play, None for all
     results_dir: str        # clem run -r
+    batch_size: int = 1     # clem run -b (recorded in run.json)
 
 
 def clem_run_options(argv: list[str] | None = None) -> ClemRun | None:
-    """`clem run`'s -e and -r, read from clem's command line (`argv`, default sys.argv); None when
+    """`clem run`'s -e, -r and -b, read from clem's command line (`argv`, default sys.argv); None when
     this process is not `clem run`.
 
     The one place the package reads the command line, and why it must: clemcore 3.7's `cli.run`
@@ -135,11 +136,12 @@ def clem_run_options(argv: list[str] | None = None) -> ClemRun | None:
     parser.add_argument("command", nargs="?")
     parser.add_argument("-e", "--experiment_name", default=None)
     parser.add_argument("-r", "--results_dir", default="results")
+    parser.add_argument("-b", "--batch_size", type=int, default=1)
     try:
         args, _ = parser.parse_known_args(argv[1:])
     except SystemExit:  # clem's own parser reports the command line's mistakes
         return None
-    return ClemRun(args.experiment_name, args.results_dir) if args.command == "run" else None
+    return ClemRun(args.experiment_name, args.results_dir, args.batch_size) if args.command == "run" else None
 
 
 def instance_file(game_spec) -> str:
@@ -167,11 +169,12 @@ class BuildBenchmark(GameBenchmark):
                 print(f"{'sartco resume' if resuming else 'clem run'} -g {game_spec.game_name}: {error}", file=sys.stderr)
                 raise SystemExit(2) from None  # not an Exception: clem's loop does not log and go on
             if resuming:
-                results_dir, selected = resuming
+                results_dir, episodes, batch_size = resuming
+                selected = len(episodes)
             else:
-                results_dir = run.results_dir
+                results_dir, episodes, batch_size = run.results_dir, None, run.batch_size
             self.recorder = provenance.RunRecorder(game_spec.game_name, results_dir, path, experiment, selected,
-                                                   resume=bool(resuming))
+                                                   batch_size, resume=bool(resuming), episodes=episodes)
 
     @classmethod
     def fields_of(cls, episode: dict) -> dict:
