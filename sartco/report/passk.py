@@ -9,8 +9,9 @@ measurement of the model: it is left out of n and c, counted in the column harne
   pass@k  the unbiased estimator of Chen et al. 2021 (Codex paper), 1 - C(n-c, k) / C(n, k):
           the chance that at least one of k samples drawn without replacement succeeds
   pass^k  C(c, k) / C(n, k): the chance that all k samples succeed
-averaged over the episodes, in percent, for k = 1, 5 and N (k > N left out; NaN when an
-episode has fewer than k samples, e.g. a sample run that stopped early or a harness error). pass@1 = pass^1 = the
+averaged over the episodes with at least k such samples, in percent, for k = 1, 5 and N (k > N
+left out; NaN when no episode has k samples; the column samples gives the fewest an episode has,
+fewer than N after a sample run that stopped early or a harness error). pass@1 = pass^1 = the
 mean ES of the samples. A deterministic model (mock, rulebased) has c in {0, n} for every
 episode, so its pass@k = pass^k = pass@1. A RESULTS folder that holds nothing but samples/ gets
 passk.md / .csv alone.
@@ -66,15 +67,20 @@ def counts(per_sample: list[list[dict]]) -> dict[tuple, dict[str, list[int]]]:
     return out
 
 
+def mean_percent(values: list[float]) -> float:
+    return round(100 * sum(values) / len(values), 2) if values else float("nan")
+
+
 def rows(table: dict[tuple, dict[str, list[int]]], ks: list[int]) -> list[dict]:
     out = []
     for (model, game, experiment), episodes in sorted(table.items()):
         ncs = [(n, c) for n, c, _ in episodes.values()]
         row = {"model": model, "game": game, "experiment": experiment, "episodes": len(ncs),
                "samples": min(n for n, _ in ncs), "harness_errors": sum(h for _, _, h in episodes.values())}
-        for k in ks:
-            row[f"pass@{k}"] = round(100 * sum(pass_at_k(n, c, k) for n, c in ncs) / len(ncs), 2)
-            row[f"pass^{k}"] = round(100 * sum(pass_all_k(n, c, k) for n, c in ncs) / len(ncs), 2)
+        for k in ks:  # over the episodes with at least k measured samples
+            enough = [(n, c) for n, c in ncs if n >= k]
+            row[f"pass@{k}"] = mean_percent([pass_at_k(n, c, k) for n, c in enough])
+            row[f"pass^{k}"] = mean_percent([pass_all_k(n, c, k) for n, c in enough])
         out.append(row)
     return out
 
@@ -110,8 +116,8 @@ def write(results: Path, out: Path) -> tuple[list[str], int]:
     spoiled = [(f, e["model"], e["game"]) for f, episodes in zip(folders, per_sample) for e in episodes if is_harness(e)]
     md = (f"# pass@k over {len(folders)} samples per episode ({results / SAMPLES})\n\n"
           "pass@k = chance that at least one of k samples succeeds (execution success; unbiased estimator of "
-          "Chen et al. 2021), pass^k = chance that all k succeed, in % over the episodes; samples = the fewest "
-          "samples of an episode; NaN when an episode has fewer than k samples. A harness_error sample (the "
+          "Chen et al. 2021), pass^k = chance that all k succeed, in % over the episodes with at least k "
+          "samples; samples = the fewest samples of an episode; NaN when no episode has k samples. A harness_error sample (the "
           "harness failed, not the model) is left out and counted in harness_errors.\n\n")
     if faults:
         fixes = sorted({f"sartco resume -r {folder} -g {game} -m {model}" for folder, model, game in spoiled})

@@ -102,8 +102,9 @@ def require_episodes(instances: dict, source) -> None:
     """UserError unless the generated instances hold an episode: a generator whose input is
     missing (e.g. ../shared) must say so, not replace an instance file with an empty one."""
     if not any(e.get("game_instances") for e in instances.get("experiments", [])):
-        if not Path(source).exists():
-            raise UserError(f"{source}: {data_error(source) or 'no such file or folder'}; no instance file written")
+        if not Path(source).exists():  # a missing data folder: the setting to give, not a path that stands for none
+            missing = data_error(source)
+            raise UserError(f"{missing or f'{source}: no such file or folder'}; no instance file written")
         raise UserError(f"{source}: no episodes were generated from it; no instance file written")
 
 
