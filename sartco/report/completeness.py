@@ -30,6 +30,7 @@ class Completeness:
     problems: list[dict] = field(default_factory=list)         # model, game, experiment, game_id, problem
     runs: dict[tuple, dict] = field(default_factory=dict)      # (model, game) -> run.json
     unverifiable: list[str] = field(default_factory=list)      # folders whose instance file is unknown
+    results: Path = Path("results")                             # the results folder checked
 
     def scored(self, key: tuple) -> int:
         return self.expected[key] - sum(1 for p in self.problems if (p["model"], p["game"], p["experiment"]) == key)
@@ -53,7 +54,7 @@ def cell(episodes: list[dict]) -> dict:
 def check(results: Path, games: list[str] | None, game_names: set[str]) -> Completeness:
     """Every results/<model>/<game> folder of `games` (None: all) whose game is one of
     `game_names` (the SARTCo games found in the folder) or has a SARTCo run.json."""
-    out = Completeness()
+    out = Completeness(results=Path(results))
     for game_dir in sorted(p for p in Path(results).glob("*/*") if p.is_dir()):
         if (games and game_dir.name not in games) or (
                 game_dir.name not in game_names and not (game_dir / "run.json").is_file()):
@@ -137,8 +138,9 @@ def finish(result: Completeness, out: Path, written: list[str]) -> int:
     for key in incomplete:
         found = [p for p in result.problems if (p["model"], p["game"], p["experiment"]) == key]
         lines.append(f"  {' / '.join(key)}: {result.scored(key)} of {result.expected[key]} scored; {_ids(found)}")
+    fixes = sorted({f"sartco resume -r {result.results} -g {game} -m {model}" for model, game, _ in incomplete})
     print(f"sartco report: INCOMPLETE ({len(result.problems)} episodes; exit status {INCOMPLETE_STATUS}):\n"
-          + "\n".join(lines), file=sys.stderr)
+          + "\n".join(lines) + "\n  to complete: " + "; ".join(fixes), file=sys.stderr)
     return INCOMPLETE_STATUS
 
 

@@ -87,6 +87,7 @@ def test_resume_of_one_experiment_plays_it_alone_with_the_runs_settings(tmp_path
     assert all(run["packages"].values()) and run["python"]["version"].count(".") == 2
     assert run["seeds"] == {"erring_players": 42, "erring_slip_rate": 0.3, "erring_fix_rate": 0.5, "function_probes": 0}
     assert run["instance_file"]["generated"]["dataset"]["generator_seed"] == 42
+    assert run["instance_file"]["generated"]["dataset_manifest"]["path"] == "instances/v1/manifest.json"
 
     report = sartco("report", "-r", tmp_path / "results", "--out", tmp_path / "scores")
     assert report.returncode == 0, report.stderr
@@ -154,12 +155,9 @@ def test_one_resume_plays_the_unscored_harness_errors_again(tmp_path):
     failing = frozenset({conversation_key(games[1]["turns"][:1])})
     with StubServer(answer_table(games), latency=0.0, failing=failing) as server:
         file = stub_setup(tmp_path / "run", server, retries=1, backoff=0.01)
+        first_url = server.base_url
         benchrun.clem(["run", "-g", GAME, "-m", benchrun.MODEL, "-l", "512", "-b", "4", "-i", str(file), "-r", "results"],
                       tmp_path / "run")   # not scored
-    run = json.loads((tmp_path / "run" / "results" / "stub" / GAME / "run.json").read_text())
-    [model] = run["models"]
-    assert model["base_url"].rstrip("/") == server.base_url and "api_key" not in json.dumps(run)
-    assert (run["generation"], run["batch_size"]) == ({"temperature": 0.0, "max_tokens": 512}, 4)
     with StubServer(answer_table(games), latency=0.0) as server:
         benchrun.write_scratch(tmp_path / "run", server.base_url, "openai_batching", 4)
         done = sartco("resume", "-r", "results", "-g", GAME, "-m", benchrun.MODEL, cwd=tmp_path / "run", env=env)
@@ -174,6 +172,10 @@ def test_one_resume_plays_the_unscored_harness_errors_again(tmp_path):
         for key in [k for k in files if k.endswith("interactions.json") or k.endswith("scores.json")]:
             files[key]["player_models"] = {i: m["gen_args"] for i, m in files[key]["player_models"].items()}
     assert resumed == clean and len(clean) == 12
+    run = json.loads((tmp_path / "run" / "results" / "stub" / GAME / "run.json").read_text())
+    assert [m["base_url"].rstrip("/") for s in run["sessions"] for m in s["models"]] == [first_url, server.base_url]
+    assert "api_key" not in json.dumps(run)   # key.json's key is never recorded
+    assert (run["generation"], run["batch_size"]) == ({"temperature": 0.0, "max_tokens": 512}, 4)
 
 
 def test_resume_without_play_says_nothing_about_the_server(tmp_path, clean):

@@ -8,7 +8,9 @@ to the one that was playing, and has no `end`) and again when clemcore closes th
   instance_file              {path (relative to the workspace when inside it: sartco.settings),
                              name, sha256, generated: how the file was made (its own `dataset`,
                              `seed` and `generator` fields: dataset version and seed, generator
-                             seed, in-context examples, sartco version; null for a file without them)}
+                             seed, in-context examples; and dataset_manifest: path and sha256 of
+                             the dataset's manifest.json, which holds its generation config;
+                             null for a file without them)}
   experiment                 the `-e` experiment or null (all experiments of the file)
   models                     clemcore's model entries, without secrets (keys named like key,
                              token, secret, password, auth are left out; a base_url stays)
@@ -127,6 +129,12 @@ def instance_file_info(path: Path) -> dict:
     except (OSError, ValueError):
         data = None  # checked before anything is played (benchmark.check_instances)
     made = {k: data[k] for k in GENERATION_FIELDS if k in data} if isinstance(data, dict) else {}
+    dataset = made.get("dataset")
+    manifest = root / dataset["path"] / "manifest.json" if isinstance(dataset, dict) and isinstance(
+        dataset.get("path"), str) else None
+    if manifest is not None and manifest.is_file():  # the dataset's generation config, by its hash
+        made["dataset_manifest"] = {"path": str(manifest.relative_to(root)) if manifest.is_relative_to(root)
+                                    else str(manifest), "sha256": sha256_of(manifest)}
     return {"path": str(shown), "name": path.stem, "sha256": sha256_of(path), "generated": made or None}
 
 
@@ -146,9 +154,11 @@ def load_run(game_dir: Path) -> dict | None:
     try:
         data = json.loads(path.read_text(encoding="utf-8"))
     except (OSError, ValueError) as exc:
-        raise ProvenanceError(f"{path}: cannot read ({exc})") from None
+        raise ProvenanceError(f"{path}: cannot read ({exc}); repair it, or remove it to check the folder against "
+                              f"its game's default instance file") from None
     if not isinstance(data, dict) or not isinstance(data.get("instance_file"), dict):
-        raise ProvenanceError(f"{path}: not a SARTCo run.json (no 'instance_file')")
+        raise ProvenanceError(f"{path}: not a SARTCo run.json (no 'instance_file'); remove it to check the folder "
+                              f"against its game's default instance file")
     return data
 
 
@@ -266,18 +276,22 @@ def played_instance_file(game_dir: Path, run: dict | None = None) -> tuple[Path,
     if run is None:
         entries = game_entries()
         if game_dir.name not in entries:
-            raise ProvenanceError(f"{game_dir}: no run.json and no game entry '{game_dir.name}' in games/*/clemgame.json")
+            raise ProvenanceError(f"{game_dir}: no run.json and no game entry '{game_dir.name}' in games/*/clemgame.json "
+                                  f"(run sartco from the checkout or the folder `sartco games` wrote)")
         return entries[game_dir.name], None
     files = {(s["instance_file"]["path"], s["instance_file"]["sha256"]) for s in run.get("sessions", [])}
     if len({sha for _, sha in files}) > 1:
         listing = ", ".join(f"{path} sha256 {sha[:12]}" for path, sha in sorted(files))
-        raise ProvenanceError(f"{game_dir}: refusing to merge runs played from different instance files ({listing})")
+        raise ProvenanceError(f"{game_dir}: refusing to merge runs played from different instance files ({listing}); "
+                              f"play each instance file into a results folder (-r) of its own")
     recorded = run["instance_file"]
     path = Path(recorded["path"])
     path = path if path.is_absolute() else workspace() / path
     if not path.is_file():
-        raise ProvenanceError(f"{game_dir}: its instance file {recorded['path']} (run.json) no longer exists")
+        raise ProvenanceError(f"{game_dir}: its instance file {recorded['path']} (run.json) no longer exists; "
+                              f"regenerate it (run.json's instance_file.generated) or play the run again into a new -r folder")
     if sha256_of(path) != recorded["sha256"]:
         raise ProvenanceError(f"{game_dir}: instance file {recorded['path']} changed since the run "
-                              f"(sha256 {recorded['sha256'][:12]} in run.json, now {sha256_of(path)[:12]})")
+                              f"(sha256 {recorded['sha256'][:12]} in run.json, now {sha256_of(path)[:12]}); restore the "
+                              f"file the run was played from (e.g. git checkout) or play it again into a new -r folder")
     return path, run

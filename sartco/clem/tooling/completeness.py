@@ -72,7 +72,8 @@ def check_game(game_dir: Path) -> tuple[dict[str, int], list[dict], dict | None]
     except FileNotFoundError:
         raise Unverifiable(f"{game_dir}: no run.json, and the default instance file {instance_path} does not exist") from None
     except (OSError, ValueError) as exc:
-        raise ProvenanceError(f"{game_dir}: cannot read its instance file {instance_path} ({exc})") from None
+        raise ProvenanceError(f"{game_dir}: cannot read its instance file {instance_path} ({exc}); restore the "
+                              f"file the run was played from") from None
     if run is None:
         _played_from(game_dir, data, instance_path)
     chosen = selection(run) if run is not None else {p.name for p in game_dir.iterdir() if p.is_dir()}
