@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-from play_helpers import REPO, sh
+from play_helpers import REPO, sh, stub_scratch
 from sartco.clem.tooling import benchrun
 from sartco.clem.tooling.stub_server import StubServer, answer_table, conversation_key
 
@@ -23,6 +23,7 @@ BIN = Path(sys.executable).parent
 GAME = "cobot_instruct"
 EXPERIMENT = "sb_so_optimal_function_template"   # 2 episodes in instances_smoke
 SETTINGS = ["-l", "250", "-t", "0.0", "-b", "2"]
+EXPERIMENTS_SMALL = ["rb_so_repetition_template", "sb_so_first_order_template"]   # the stub server's runs
 
 
 def sartco(*args, cwd=REPO, env=None) -> subprocess.CompletedProcess:
@@ -125,20 +126,12 @@ def test_a_killed_run_says_how_far_it_got(tmp_path):
     assert record["counts"]["episodes_played"] == record["sessions"][0]["episodes_played"]
 
 
-def stub_setup(tmp_path: Path, server: StubServer, **config) -> Path:
-    instances = benchrun.select_instances(["rb_so_repetition_template", "sb_so_first_order_template"], 2)
-    tmp_path.mkdir(parents=True, exist_ok=True)
-    file = tmp_path / "instances_small.json"
-    file.write_text(json.dumps(instances))
-    benchrun.write_scratch(tmp_path, server.base_url, "openai_batching", 4)
-    registry = json.loads((tmp_path / "model_registry.json").read_text())
-    registry[0]["model_config"].update(config)
-    (tmp_path / "model_registry.json").write_text(json.dumps(registry))
-    return file.with_suffix("")
+def stub_setup(folder: Path, server: StubServer, **config) -> Path:
+    return stub_scratch(folder, server.base_url, EXPERIMENTS_SMALL, **config)[1]
 
 
 def stub_games() -> list[dict]:
-    chosen = benchrun.select_instances(["rb_so_repetition_template", "sb_so_first_order_template"], 2)
+    chosen = benchrun.select_instances(EXPERIMENTS_SMALL, 2)
     return [i for e in chosen["experiments"] for i in e["game_instances"]]
 
 

@@ -10,7 +10,7 @@ from math import prod
 
 import pytest
 
-from play_helpers import GAMES, REPO
+from play_helpers import GAMES, REPO, stub_scratch
 from report_helpers import write_results
 from sartco.cli import main as sartco_main
 from sartco.report.passk import pass_all_k, pass_at_k
@@ -88,13 +88,10 @@ def test_harness_error_samples_are_left_out_and_fail_the_report(tmp_path):
 
     chosen = benchrun.select_instances(["rb_so_repetition_template", "sb_so_first_order_template"], 2)
     games = [i for e in chosen["experiments"] for i in e["game_instances"]]
-    (tmp_path / "instances_small.json").write_text(json.dumps(chosen))
     failing = frozenset({conversation_key(games[0]["turns"][:1])})   # rb_so_repetition_template game 0
     with StubServer(answer_table(games), latency=0.0, failing=failing) as server:
-        benchrun.write_scratch(tmp_path, server.base_url, "openai_batching", 4)
-        registry = json.loads((tmp_path / "model_registry.json").read_text())
-        registry[0]["model_config"].update(retries=1, backoff=0.01)
-        (tmp_path / "model_registry.json").write_text(json.dumps(registry))
+        stub_scratch(tmp_path, server.base_url, ["rb_so_repetition_template", "sb_so_first_order_template"],
+                     retries=1, backoff=0.01)
         done = subprocess.run([sys.executable, "-m", "sartco", "sample", "-g", "cobot_instruct", "-m", benchrun.MODEL,
                                "-n", "2", "-t", "0.7", "-b", "4", "-i", str(tmp_path / "instances_small"), "-r", "res"],
                               cwd=tmp_path, env=dict(os.environ, CLEMBENCH_HOME=str(benchrun.GAME_DIR.parents[1])),
