@@ -132,3 +132,9 @@ CORRECTIONS = 3              # describer's corrections of the modes that correct
 # model_config takes precedence): requests in flight, retries after a failed try, seconds
 # before the first retry (doubling), seconds per try, seconds of retrying per request at most
 MODEL_SERVER = {"concurrency": 16, "retries": 5, "backoff": 1.0, "timeout": 120.0, "retry_budget": 600.0}
+# The erring players (sartco.clem.players.erring; `-m erring`): the player seed, the share of pieces
+# that slip, the chance that a slip other than the first is fixed after a feedback. run.json records
+# them (sartco.clem.core.provenance).
+ERRING_SEED = 42
+ERRING_RATE = 0.3
+ERRING_FIX = 0.5

@@ -82,3 +82,20 @@ def sh(*args, cwd=REPO, timeout=900) -> subprocess.CompletedProcess:
 def clem(*args, cwd=REPO) -> subprocess.CompletedProcess:
     """clemcore's CLI (`clem ...`) with this interpreter."""
     return sh(sys.executable, "-c", "from clemcore.cli import main; main()", *args, cwd=cwd)
+
+
+def stub_scratch(folder: Path, base_url: str, experiments: list[str], episodes: int = 2, **config) -> tuple[dict, Path]:
+    """A clem working folder for the model `stub` on openai_batching at `base_url` (key.json,
+    model_registry.json with `config` in its model_config) and an instance file of the first
+    `episodes` of each cobot_instruct experiment; (the instances, the file without .json: clem run -i)."""
+    from sartco.clem.tooling import benchrun
+
+    folder.mkdir(parents=True, exist_ok=True)
+    instances = benchrun.select_instances(experiments, episodes)
+    file = folder / "instances_small.json"
+    file.write_text(json.dumps(instances))
+    benchrun.write_scratch(folder, base_url, "openai_batching", 4)
+    registry = json.loads((folder / "model_registry.json").read_text())
+    registry[0]["model_config"].update(config)
+    (folder / "model_registry.json").write_text(json.dumps(registry))
+    return instances, file.with_suffix("")

@@ -134,6 +134,13 @@ def described(gen: InstanceFile, seed: int, dataset_dir: Path, n_examples: int, 
     if manifest.get("source") != "describer":
         raise UserError(f"{describers_dir}: not a describer dataset (manifest source {manifest.get('source')!r})")
     d_info = gen.instances["dataset"] = dataset_info(manifest, describers_dir, seed, n_examples, examples_from=info)
+    unplayed = [experiment_name(kind, DESCRIBED_TASK[kind.board], "describer") for kind in BOARD_KINDS
+                if kind.dataset_file("test") not in files]
+    if unplayed:  # a describer run of only some of cobot_describe's experiments
+        raise UserError(f"{describers_dir}: the describer run played no episode of {', '.join(unplayed)}: play "
+                        f"{'each with' if len(unplayed) > 1 else 'it with'} `clem run -g cobot_describe -e EXPERIMENT "
+                        f"-m MODEL -r RESULTS` into the describer's results, then `sartco import-instructions -r "
+                        f"RESULTS --out {describers_dir}` again")
     for source in manifest["config"]["instruction_sources"]:
         for kind in BOARD_KINDS:
             task = DESCRIBED_TASK[kind.board]

@@ -3,8 +3,8 @@ episodes of the instance file it was played from (sartco.clem.core.provenance.pl
 run.json's, else the game entry's default file).
 
 What counts as missing, errored, unscored or unreadable: sartco.clem.tooling.completeness.
-The experiments checked: with run.json those its sessions played (all of the file when one of
-them had no -e), without it those with a folder. `sartco report` writes completeness.md / .csv,
+The experiments checked: with run.json those its sessions chose (all of the file when one of
+them had no -e; a resume chooses nothing new), without it those with a folder. `sartco report` writes completeness.md / .csv,
 marks each incomplete cell with INCOMPLETE_MARK and exits with INCOMPLETE_STATUS; `sartco resume`
 plays the missing and errored episodes again and scores the unscored ones.
 """
@@ -15,7 +15,7 @@ from collections import Counter
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from sartco.clem.core.provenance import ProvenanceError
+from sartco.clem.core.provenance import ProvenanceError, selecting
 from sartco.clem.tooling.completeness import INCOMPLETE_STATUS, PROBLEMS, Unverifiable, check_game
 from sartco.errors import UserError
 
@@ -30,6 +30,7 @@ class Completeness:
     problems: list[dict] = field(default_factory=list)         # model, game, experiment, game_id, problem
     runs: dict[tuple, dict] = field(default_factory=dict)      # (model, game) -> run.json
     unverifiable: list[str] = field(default_factory=list)      # folders whose instance file is unknown
+    results: Path = Path("results")                             # the results folder checked
 
     def scored(self, key: tuple) -> int:
         return self.expected[key] - sum(1 for p in self.problems if (p["model"], p["game"], p["experiment"]) == key)
@@ -53,7 +54,7 @@ def cell(episodes: list[dict]) -> dict:
 def check(results: Path, games: list[str] | None, game_names: set[str]) -> Completeness:
     """Every results/<model>/<game> folder of `games` (None: all) whose game is one of
     `game_names` (the SARTCo games found in the folder) or has a SARTCo run.json."""
-    out = Completeness()
+    out = Completeness(results=Path(results))
     for game_dir in sorted(p for p in Path(results).glob("*/*") if p.is_dir()):
         if (games and game_dir.name not in games) or (
                 game_dir.name not in game_names and not (game_dir / "run.json").is_file()):
@@ -119,10 +120,8 @@ def finish(result: Completeness, out: Path, written: list[str]) -> int:
     """Print the provenance of each run and what is incomplete (ids), head every Markdown table
     of an incomplete folder with a warning; the exit status of `sartco report`."""
     for (model, game), run in sorted(result.runs.items()):
-        generation = ", ".join(f"{k} {v}" for k, v in (run.get("generation") or {}).items())
-        print(f"  run {model} / {game}: {run['instance_file']['path']} sha256 {run['instance_file']['sha256'][:12]}, "
-              f"sartco {run.get('sartco_version')} {(run.get('git_commit') or 'no git')[:12]}, clemcore "
-              f"{run.get('clemcore_version')}, {generation}, {run.get('start')} .. {run.get('end')}")
+        print(f"  run {model} / {game}: played with {played_with(run)}; {run['instance_file']['path']} sha256 "
+              f"{run['instance_file']['sha256'][:12]}; {software(run)}; {run.get('start')} .. {run.get('end')}")
     for note in result.unverifiable:
         print(f"  not checked: {note}")
     incomplete = [k for k in sorted(result.expected) if result.scored(k) < result.expected[k]]
@@ -139,21 +138,45 @@ def finish(result: Completeness, out: Path, written: list[str]) -> int:
     for key in incomplete:
         found = [p for p in result.problems if (p["model"], p["game"], p["experiment"]) == key]
         lines.append(f"  {' / '.join(key)}: {result.scored(key)} of {result.expected[key]} scored; {_ids(found)}")
+    fixes = sorted({f"sartco resume -r {result.results} -g {game} -m {model}" for model, game, _ in incomplete})
     print(f"sartco report: INCOMPLETE ({len(result.problems)} episodes; exit status {INCOMPLETE_STATUS}):\n"
-          + "\n".join(lines), file=sys.stderr)
+          + "\n".join(lines) + "\n  to complete: " + "; ".join(fixes), file=sys.stderr)
     return INCOMPLETE_STATUS
 
 
-RUN_HEADER = ["model", "game", "instance file", "sha256", "sartco", "git commit", "clemcore", "generation",
-              "start", "end", "sessions", "played"]
+def played_with(run: dict) -> str:
+    """The settings a run.json's numbers come from: temperature, max_tokens and batch size with the
+    experiments each was chosen for (-e; "all experiments"), one group per distinct setting."""
+    groups: dict[tuple, list[str]] = {}
+    for session in selecting(run):
+        generation = session.get("generation") or {}
+        key = tuple(_recorded(v) for v in (generation.get("temperature"), generation.get("max_tokens"),
+                                           session.get("batch_size")))
+        groups.setdefault(key, []).append(session.get("experiment") or "all experiments")
+    return "; ".join(f"temperature {t}, max_tokens {m}, batch size {b} ({', '.join(dict.fromkeys(x))})"
+                     for (t, m, b), x in groups.items()) or "no session recorded"
+
+
+def _recorded(value) -> str:
+    return "not recorded" if value is None else str(value)
+
+
+def software(run: dict) -> str:
+    """The interpreter and the versions of the packages a score depends on, from a run.json."""
+    python = (run.get("python") or {}).get("version", "not recorded")
+    packages = run.get("packages") or {"sartco-bench": run.get("sartco_version"), "clemcore": run.get("clemcore_version")}
+    return (f"python {python}, " + ", ".join(f"{k} {_recorded(v)}" for k, v in packages.items())
+            + f", git {(run.get('git_commit') or 'none')[:12]}")
+
+
+RUN_HEADER = ["model", "game", "instance file", "sha256", "played with", "software", "start", "end", "sessions",
+              "played"]
 
 
 def run_row(model: str, game: str, run: dict) -> list:
     """The provenance of one run.json, in RUN_HEADER's order."""
-    return [model, game, run["instance_file"]["path"], run["instance_file"]["sha256"][:12], run.get("sartco_version"),
-            (run.get("git_commit") or "")[:12], run.get("clemcore_version"),
-            ", ".join(f"{k} {v}" for k, v in (run.get("generation") or {}).items()), run.get("start"), run.get("end"),
-            run["counts"]["sessions"], run["counts"]["episodes_played"]]
+    return [model, game, run["instance_file"]["path"], run["instance_file"]["sha256"][:12], played_with(run),
+            software(run), run.get("start"), run.get("end"), run["counts"]["sessions"], run["counts"]["episodes_played"]]
 
 
 def runs_markdown(runs: dict[tuple, dict]) -> str:

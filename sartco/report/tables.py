@@ -222,13 +222,14 @@ def run(args: argparse.Namespace) -> int:
     files, after = contamination.write(episodes, out)  # published vs fresh boards; robustness across sources
     more, after_robust = robustness.write(args.results, episodes, out)
     written += files + more
-    written += passk.write(args.results, out)  # pass@k of `sartco sample`'s runs (RESULTS/samples/s1..sN)
+    files, sample_faults = passk.write(args.results, out)  # pass@k of `sartco sample`'s runs (RESULTS/samples/s1..sN)
+    written += files
     header, rows = errors(everything)
     write_csv(out / "errors.csv", header, rows)
     md = "# Error categories (episodes per category)\n\n" + markdown_table(header, [[r[h] for h in header] for r in rows])
     (out / "errors.md").write_text(md, encoding="utf-8")
     written += ["errors.md", "errors.csv"]
-    files, faults = harness_table.write(everything, out)
+    files, faults = harness_table.write(everything, out, args.results)
     written += files
     if paper_md:
         print(paper_md)
@@ -239,4 +240,4 @@ def run(args: argparse.Namespace) -> int:
     print(f"sartco report: {len(everything)} episodes -> " + ", ".join(str(out / w) for w in written)
           + (f"; removed {len(stale)} stale files of an earlier report: " + ", ".join(stale) if stale else ""))
     status = completeness.finish(found, out, written)
-    return status or (harness_table.HARNESS_STATUS if faults else 0)
+    return status or (harness_table.HARNESS_STATUS if faults or sample_faults else 0)

@@ -12,6 +12,7 @@ import time
 
 import pytest
 
+from play_helpers import stub_scratch
 from sartco.clem.tooling import benchrun
 from sartco.clem.tooling.stub_server import StubServer, answer_table, conversation_key
 from sartco.report.harness_table import HARNESS_STATUS
@@ -20,14 +21,7 @@ EXPERIMENTS = ["rb_so_repetition_template", "sb_so_first_order_template"]
 
 
 def setup(tmp_path, server: StubServer, **config) -> tuple:
-    instances = benchrun.select_instances(EXPERIMENTS, 2)
-    file = tmp_path / "instances_small.json"
-    file.write_text(json.dumps(instances))
-    benchrun.write_scratch(tmp_path, server.base_url, "openai_batching", 4)
-    registry = json.loads((tmp_path / "model_registry.json").read_text())
-    registry[0]["model_config"].update(config)
-    (tmp_path / "model_registry.json").write_text(json.dumps(registry))
-    return instances, file.with_suffix("")
+    return stub_scratch(tmp_path, server.base_url, EXPERIMENTS, **config)
 
 
 def run(tmp_path, instances_file, results: str, batch: int) -> None:

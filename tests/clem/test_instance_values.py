@@ -132,6 +132,33 @@ def test_paper_generator_refuses_a_missing_shared_folder(tmp_path, monkeypatch, 
     assert kept.read_text() == KEPT
 
 
+def test_paper_generator_without_a_data_folder_names_the_setting(tmp_path, monkeypatch, capsys):
+    """A wheel install without $SARTCO_DATA (issue 33): the line says which setting to give, not a
+    placeholder path; with $SARTCO_DATA naming a missing folder it names that folder and the setting."""
+    import os
+    import subprocess
+    import sys
+
+    import sartco.paper.episodes as paper_episodes
+    from sartco import settings
+
+    monkeypatch.setattr(settings, "DATA", None)
+    monkeypatch.setattr(paper_episodes, "DEFAULT_PUBLISHED", settings.data_path("published"))
+    generator, kept = copied_generator(tmp_path)
+    assert generator.main(["--protocol", "paper", *DATASET]) == 2
+    assert capsys.readouterr().err == (
+        "instancegenerator: no SARTCo data folder: set $SARTCO_DATA or `sartco --data DIR` (the folder with "
+        "published/, gold_boards/, paper-protocol/); no instance file written\n")
+    assert kept.read_text() == KEPT
+    done = subprocess.run([sys.executable, str(generator.__file__), "--protocol", "paper", *DATASET], cwd=REPO,
+                          capture_output=True, text=True, timeout=300,
+                          env={**os.environ, "SARTCO_DATA": str(tmp_path / "no-data")})
+    assert done.returncode == 2 and done.stderr == (
+        f"instancegenerator: SARTCo data folder {tmp_path / 'no-data'} not found: set $SARTCO_DATA or `sartco --data "
+        "DIR` (the folder with published/, gold_boards/, paper-protocol/); no instance file written\n")
+    assert kept.read_text() == KEPT
+
+
 def test_paper_generator_refuses_a_folder_without_episodes(tmp_path, capsys):
     empty = tmp_path / "published"
     empty.mkdir()

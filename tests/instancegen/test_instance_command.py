@@ -177,3 +177,25 @@ def test_the_naming_rule():
         "rb_so_repetition_org_model_feedback"
     with pytest.raises(ValueError):
         kind_named("simple_boards")  # one vocabulary of kinds: key, prefix, cell
+
+
+def test_a_partial_describer_dataset_names_the_experiments_to_play(tmp_path):
+    """A describer run of one of cobot_describe's three experiments, imported: the builder file
+    cannot be made, and the line says which experiments to play and how (issue 33)."""
+    import subprocess
+    import sys
+
+    from play_helpers import clem
+
+    results = tmp_path / "results"
+    clem("run", "-g", "cobot_describe", "-m", "mock", "-i", "instances_slice", "-e", "sb_so_optimal_function_describer",
+         "-r", str(results))
+    assert sartco_main(["import-instructions", "-r", str(results), "--out", str(tmp_path / "described")]) == 0
+    script, folder = copied_script(tmp_path, "cobot_instruct")
+    done = subprocess.run([sys.executable, str(folder / "instancegenerator.py"), "--describers", str(tmp_path / "described")],
+                          cwd=REPO, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 2 and done.stderr == (
+        f"instancegenerator: {tmp_path / 'described'}: the describer run played no episode of rb_so_repetition_describer, "
+        "rb_co_repetition_describer: play each with `clem run -g cobot_describe -e EXPERIMENT -m MODEL -r RESULTS` into "
+        f"the describer's results, then `sartco import-instructions -r RESULTS --out {tmp_path / 'described'}` again\n")
+    assert not (folder / "in").exists()

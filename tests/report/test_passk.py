@@ -10,7 +10,7 @@ from math import prod
 
 import pytest
 
-from play_helpers import GAMES, REPO
+from play_helpers import GAMES, REPO, stub_scratch
 from report_helpers import write_results
 from sartco.cli import main as sartco_main
 from sartco.report.passk import pass_all_k, pass_at_k
@@ -74,3 +74,38 @@ def test_deterministic_models_have_pass_at_k_equal_to_pass_at_1(tmp_path, model,
         assert float(r[f"pass@{n}"]) == float(r[f"pass^{n}"]) == float(r["pass@1"])
     if model == "mock":
         assert float(rows[0]["pass@1"]) == 50.0 or float(rows[1]["pass@1"]) == 50.0
+
+
+def test_harness_error_samples_are_left_out_and_fail_the_report(tmp_path):
+    """`sartco sample` against a model server that never answers one episode (HTTP 500): its
+    samples are harness errors, not the model's failures; pass@k is computed without them, says how
+    many it left out, and `sartco report` exits 3 naming the resume that plays them again."""
+    import os
+
+    from sartco.clem.tooling import benchrun
+    from sartco.clem.tooling.stub_server import StubServer, answer_table, conversation_key
+    from sartco.report.harness_table import HARNESS_STATUS
+
+    chosen = benchrun.select_instances(["rb_so_repetition_template", "sb_so_first_order_template"], 2)
+    games = [i for e in chosen["experiments"] for i in e["game_instances"]]
+    failing = frozenset({conversation_key(games[0]["turns"][:1])})   # rb_so_repetition_template game 0
+    with StubServer(answer_table(games), latency=0.0, failing=failing) as server:
+        stub_scratch(tmp_path, server.base_url, ["rb_so_repetition_template", "sb_so_first_order_template"],
+                     retries=1, backoff=0.01)
+        done = subprocess.run([sys.executable, "-m", "sartco", "sample", "-g", "cobot_instruct", "-m", benchrun.MODEL,
+                               "-n", "2", "-t", "0.7", "-b", "4", "-i", str(tmp_path / "instances_small"), "-r", "res"],
+                              cwd=tmp_path, env=dict(os.environ, CLEMBENCH_HOME=str(benchrun.GAME_DIR.parents[1])),
+                              capture_output=True, text=True, timeout=600)
+        assert done.returncode == 0, done.stderr[-2000:]
+    report = subprocess.run([sys.executable, "-m", "sartco", "report", "-r", "res", "--out", "out"], cwd=tmp_path,
+                            capture_output=True, text=True, timeout=300)
+    assert report.returncode == HARNESS_STATUS, report.stderr[-2000:]
+    assert ("pass@k: 2 harness error sample(s) left out (the harness failed, not the model); play them again: "
+            "sartco resume -r res/samples/s1 -g cobot_instruct -m stub; sartco resume -r res/samples/s2 -g "
+            "cobot_instruct -m stub") in report.stderr
+    rows = {r["experiment"]: r for r in csv.DictReader((tmp_path / "out" / "passk.csv").open())}
+    spoiled, whole = rows["rb_so_repetition_template"], rows["sb_so_first_order_template"]
+    # every answered sample built its board: 100, not the 50 the failures of the server would make it
+    assert (spoiled["harness_errors"], spoiled["samples"], spoiled["pass@1"], spoiled["pass^2"]) == ("2", "0", "100.0", "100.0")
+    assert (whole["harness_errors"], whole["samples"], whole["pass@1"], whole["pass^2"]) == ("0", "2", "100.0", "100.0")
+    assert (tmp_path / "out" / "passk.md").read_text().startswith("> 2 harness error sample(s) left out of pass@k")

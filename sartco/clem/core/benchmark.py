@@ -127,19 +127,20 @@ class RunOptions(typing.NamedTuple):
     """What a benchmark is built to play (run.json's session, sartco.clem.core.provenance)."""
     results_dir: Path              # clem run -r / sartco resume -r
     experiment: str | None = None  # clem run -e: the one experiment to play, None for all
-    resume_episodes: int | None = None  # sartco resume: the episodes it plays again; None: a clem run
+    batch_size: int = 1            # clem run -b / the resumed session's (recorded in run.json)
+    resume_episodes: list | None = None  # sartco resume: [[experiment, game_id], ...] it plays again; None: a clem run
 
 
 # the game spec entry through which `sartco resume` (sartco.clem.tooling.resume) hands its options
-# to the benchmark clemcore builds: {"results_dir": str, "episodes": int}
+# to the benchmark clemcore builds: {"results_dir": str, "episodes": [[experiment, game_id], ...], "batch_size": int}
 RESUME_KEY = "sartco_resume"
 
 
-def resume_selector(game_name: str, results_dir: Path, episodes: int) -> GameSpec:
+def resume_selector(game_name: str, results_dir: Path, episodes: list, batch_size: int) -> GameSpec:
     """The game selector `sartco resume` gives clemcore's `run`: the game entry plus RESUME_KEY
     (clemcore unifies it with the registered entry and builds the benchmark from the result)."""
     return GameSpec(game_name=game_name, allow_underspecified=True,
-                    **{RESUME_KEY: {"results_dir": str(results_dir), "episodes": episodes}})
+                    **{RESUME_KEY: {"results_dir": str(results_dir), "episodes": episodes, "batch_size": batch_size}})
 
 
 def run_options(game_spec: GameSpec, argv: list[str] | None = None) -> RunOptions | None:
@@ -148,12 +149,12 @@ def run_options(game_spec: GameSpec, argv: list[str] | None = None) -> RunOption
     check-instances, the gym env)."""
     resume = getattr(game_spec, RESUME_KEY, None)
     if resume is not None:
-        return RunOptions(Path(resume["results_dir"]), None, int(resume["episodes"]))
+        return RunOptions(Path(resume["results_dir"]), None, int(resume["batch_size"]), list(resume["episodes"]))
     return clem_run_options(argv)
 
 
 def clem_run_options(argv: list[str] | None = None) -> RunOptions | None:
-    """`clem run`'s -e and -r, read from clem's command line (`argv`, default sys.argv); None when
+    """`clem run`'s -e, -r and -b, read from clem's command line (`argv`, default sys.argv); None when
     this process is not `clem run`.
 
     The one place the package reads the command line, and why it must: clemcore 3.7's `cli.run`
@@ -168,11 +169,12 @@ def clem_run_options(argv: list[str] | None = None) -> RunOptions | None:
     parser.add_argument("command", nargs="?")
     parser.add_argument("-e", "--experiment_name", default=None)
     parser.add_argument("-r", "--results_dir", default="results")
+    parser.add_argument("-b", "--batch_size", type=int, default=1)
     try:
         args, _ = parser.parse_known_args(argv[1:])
     except SystemExit:  # clem's own parser reports the command line's mistakes
         return None
-    return RunOptions(Path(args.results_dir), args.experiment_name) if args.command == "run" else None
+    return RunOptions(Path(args.results_dir), args.experiment_name, args.batch_size) if args.command == "run" else None
 
 
 def start_run(game_spec: GameSpec, run: RunOptions, fields) -> provenance.RunRecorder:
@@ -187,9 +189,9 @@ def start_run(game_spec: GameSpec, run: RunOptions, fields) -> provenance.RunRec
         print(f"{'sartco resume' if resuming else 'clem run'} -g {game_spec.game_name}: {error}", file=sys.stderr)
         raise SystemExit(2) from None
     if run.resume_episodes is not None:  # resume: the episodes it plays again, not the file's
-        selected = run.resume_episodes
+        selected = len(run.resume_episodes)
     return provenance.RunRecorder(game_spec.game_name, run.results_dir, Path(path), run.experiment, selected,
-                                  resume=resuming)
+                                  run.batch_size, resume=resuming, episodes=run.resume_episodes)
 
 
 def instance_file(game_spec) -> str:

@@ -26,6 +26,7 @@ from sartco.episode import DIALOGUE_MODES
 from sartco.errors import UserError
 from sartco.follower.correct import pieces
 from sartco.paper.vocabulary import VARIANTS
+from sartco.settings import data_error
 from sartco.world import COLORS, DEFAULT_COLS, DEFAULT_ROWS, MAX_DEPTH, SHAPES, Board, WorldError, put
 from sartco.world.board import KEY, parse_key
 
@@ -101,8 +102,10 @@ def require_episodes(instances: dict, source) -> None:
     """UserError unless the generated instances hold an episode: a generator whose input is
     missing (e.g. ../shared) must say so, not replace an instance file with an empty one."""
     if not any(e.get("game_instances") for e in instances.get("experiments", [])):
-        missing = "no such file or folder" if not Path(source).exists() else "no episodes were generated from it"
-        raise UserError(f"{source}: {missing}; no instance file written")
+        if not Path(source).exists():  # a missing data folder: the setting to give, not a path that stands for none
+            missing = data_error(source)
+            raise UserError(f"{missing or f'{source}: no such file or folder'}; no instance file written")
+        raise UserError(f"{source}: no episodes were generated from it; no instance file written")
 
 
 class InstanceGenerator(GameInstanceGenerator):

@@ -36,13 +36,14 @@ from dataclasses import dataclass, replace
 from sartco.follower import FollowError, emit, read_placements
 from sartco.follower.parse import Arrangement, Placement, object_name
 from sartco.follower.regular import arrange
+from sartco.settings import ERRING_FIX, ERRING_RATE, ERRING_SEED
 from sartco.world import COLORS
 
 from .sourced import cannot_follow, fenced
 
-SEED = 42               # the player seed
-RATE = 0.3              # p: the share of pieces that slip
-FIX = 0.5               # the chance that a slip other than the first is fixed after a feedback
+SEED = ERRING_SEED      # the player seed (sartco.settings, recorded in run.json)
+RATE = ERRING_RATE      # p: the share of pieces that slip
+FIX = ERRING_FIX        # the chance that a slip other than the first is fixed after a feedback
 KINDS = ("colour", "row", "column", "missing", "extra", "swap")
 _NEIGHBOURS = ((0, 1), (1, 0), (0, -1), (-1, 0))
 

@@ -9,8 +9,8 @@ An episode of the instance file is one of
   unscored    interactions.json without scores.json (`clem score` not run on it)
   unreadable  interactions.json or scores.json is not valid JSON
   scored      everything else.
-The experiments checked: with run.json those its sessions played (all of the file when one of
-them had no -e). A folder without run.json (played before run.json existed, or in-process by
+The experiments checked: with run.json those its sessions chose (all of the file when one of
+them had no -e; a resume chooses nothing new: sartco.clem.core.provenance.selection). A folder without run.json (played before run.json existed, or in-process by
 tests) is checked against its game's default instance file only when every episode it holds is
 an episode of that file (its instance.json); else it is "unverifiable" (listed, not an error).
 """
@@ -19,7 +19,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from sartco.clem.core.provenance import ProvenanceError, played_instance_file
+from sartco.clem.core.provenance import ProvenanceError, played_instance_file, selection
 
 INCOMPLETE_STATUS = 3  # exit status of `sartco report` / `sartco resume` when an episode is not scored
 PROBLEMS = ("missing", "errored", "unscored", "unreadable")
@@ -72,13 +72,11 @@ def check_game(game_dir: Path) -> tuple[dict[str, int], list[dict], dict | None]
     except FileNotFoundError:
         raise Unverifiable(f"{game_dir}: no run.json, and the default instance file {instance_path} does not exist") from None
     except (OSError, ValueError) as exc:
-        raise ProvenanceError(f"{game_dir}: cannot read its instance file {instance_path} ({exc})") from None
+        raise ProvenanceError(f"{game_dir}: cannot read its instance file {instance_path} ({exc}); restore the "
+                              f"file the run was played from") from None
     if run is None:
         _played_from(game_dir, data, instance_path)
-    if run is not None and all(s.get("experiment") for s in run.get("sessions", [])):
-        chosen = {s["experiment"] for s in run["sessions"]}
-    else:
-        chosen = None if run is not None else {p.name for p in game_dir.iterdir() if p.is_dir()}
+    chosen = selection(run) if run is not None else {p.name for p in game_dir.iterdir() if p.is_dir()}
     expected, problems = {}, []
     model, game = game_dir.parent.name, game_dir.name
     for experiment in data.get("experiments", []):

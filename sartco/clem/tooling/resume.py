@@ -1,18 +1,23 @@
-"""`sartco resume -r RESULTS -g GAME -m MODEL [-m MODEL2] [-t T] [-l L] [-b B]`: complete an
-interrupted run in place.
+"""`sartco resume -r RESULTS -g GAME -m MODEL [-m MODEL2]`: complete an interrupted run in place.
 
 clemcore has no resume; its results folder has one folder per episode (results/<model-pair>/
 <game>/<experiment>/instance_<game_id>), so the episodes still to do are known
-(sartco.clem.tooling.completeness). Resume plays exactly the missing and errored episodes (and those
-whose interactions.json is unreadable, and the harness_error ones the model server gave no answer
-to) through clemcore's own `run` with an instance filter, into the same folder and under the
-same episode ids, then scores them and the played-but-unscored ones (as `clem score` does; nothing else is played again or rescored). The instance file is
-run.json's (sartco.clem.core.provenance); `-t` / `-l` default to run.json's generation settings.
+(sartco.clem.tooling.completeness): those of the experiments the run's sessions chose (run.json;
+a resume chooses nothing new). Resume first scores the played-but-unscored episodes (as `clem
+score` does), then plays exactly the missing and errored ones (and those whose interactions.json
+is unreadable, and the harness_error ones the model server gave no answer to, scored just now
+included) through clemcore's own `run` with an instance filter, into the same folder and under
+the same episode ids, and scores them; nothing else is played again or rescored. The instance
+file is run.json's (sartco.clem.core.provenance); each episode is played with the temperature,
+max_tokens and batch size of the session that chose it (provenance.settings_for), so the result
+equals an uninterrupted run's. `-t` / `-l` / `-b` only fill in what run.json does not record
+(else clem run's defaults, CLEM_DEFAULTS); one that contradicts run.json is refused.
 
 Exit status: 0 when the folder is complete afterwards (also when nothing was to do); 2 when it
 refuses (no such results folder, the instance file changed since the first run, runs of
-different instance files in one folder); 3 (sartco.clem.tooling.completeness.INCOMPLETE_STATUS) when
-episodes are still not scored afterwards, or the model server again gave no answer to some.
+different instance files in one folder, a setting that contradicts run.json); 3
+(sartco.clem.tooling.completeness.INCOMPLETE_STATUS) when episodes are still not scored
+afterwards, or the model server again gave no answer to some.
 """
 from __future__ import annotations
 
@@ -35,10 +40,16 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("-g", "--game", required=True, help="the game entry (e.g. cobot_instruct)")
     parser.add_argument("-m", "--models", required=True, nargs="+", help="the model(s), as given to clem run")
     parser.add_argument("-t", "--temperature", type=float, default=None,
-                        help="sampling temperature (default: the first run's, from run.json; else 0.0)")
+                        help="sampling temperature, only for a run.json that does not record it (else 0.0)")
     parser.add_argument("-l", "--max_tokens", type=int, default=None,
-                        help="maximum tokens per turn (default: the first run's, from run.json; else 300)")
-    parser.add_argument("-b", "--batch_size", type=int, default=1, help="as clem run's -b (default 1)")
+                        help="maximum tokens per turn, only for a run.json that does not record it (else 300)")
+    parser.add_argument("-b", "--batch_size", type=int, default=None,
+                        help="as clem run's -b, only for a run.json that does not record it (else 1)")
+
+
+# clem run's defaults (clemcore 3.7's cli): what a run played with when run.json does not say
+CLEM_DEFAULTS = {"temperature": 0.0, "max_tokens": 300, "batch_size": 1}
+OPTIONS = {"temperature": "-t", "max_tokens": "-l", "batch_size": "-b"}
 
 
 def run_folder(models: list[str]) -> str:
@@ -75,43 +86,78 @@ def _problems(game_dir: Path):
     return sum(expected.values()), problems, run
 
 
-def run(args: argparse.Namespace) -> int:
-    from clemcore import cli as clem_cli
-    from clemcore.backends import ModelSpec
+def settings(args: argparse.Namespace, game_dir: Path, run_json: dict | None, experiment: str) -> tuple:
+    """(temperature, max_tokens, batch_size) to play an episode of `experiment` again with: run.json's
+    (the session that chose it), else the option given, else CLEM_DEFAULTS. UserError when an option
+    given contradicts run.json."""
+    recorded = provenance.settings_for(run_json, experiment)
+    out = []
+    for name, option in OPTIONS.items():
+        given = getattr(args, name)
+        if recorded[name] is not None and given is not None and given != recorded[name]:
+            raise UserError(f"{game_dir}: {option} {given} differs from the {name} {recorded[name]} that {experiment} "
+                            f"was played with (run.json); leave {option} out: resume plays with the run's settings")
+        out.append(next(v for v in (recorded[name], given, CLEM_DEFAULTS[name]) if v is not None))
+    return tuple(out)
+
+
+def score(game: str, game_dir: Path, problems: list[dict]) -> None:
+    """Score the played episodes among `problems` (clemcore's scoring, as `clem score`)."""
     from clemcore.clemgame import GameBenchmark, GameRegistry
 
+    files = [f for f in (episode_folder(game_dir, p) / "interactions.json" for p in problems) if f.is_file()]
+    if files:
+        spec = next(s for s in GameRegistry.from_directories_and_cwd_files().get_game_specs_that_unify_with(game)
+                    if s.game_name == game)
+        with GameBenchmark.load_from_spec(spec) as bench:
+            bench.compute_scores(files)
+
+
+def play(args: argparse.Namespace, instance_path: Path, episodes: list[dict], temperature: float, max_tokens: int,
+         batch_size: int) -> None:
+    """Play `episodes` again with one set of settings, through clemcore's `run`."""
+    from clemcore import cli as clem_cli
+    from clemcore.backends import ModelSpec
+
+    wanted = {(p["experiment"], p["game_id"]) for p in episodes}
+    # the game's benchmark records this session in run.json as a resume of these episodes
+    selector = resume_selector(args.game, args.results, [[p["experiment"], p["game_id"]] for p in episodes], batch_size)
+    try:
+        clem_cli.run(selector, ModelSpec.from_strings(args.models),
+                     gen_args=dict(temperature=temperature, max_tokens=max_tokens),
+                     instances_filename=str(instance_path.with_suffix("")), results_dir_path=args.results,
+                     batch_size=batch_size,
+                     instances_filter=lambda row: (row["experiment"]["name"], row["game_instance"]["game_id"]) in wanted)
+    except SystemExit:  # clemcore exits 1 after logging an episode's exception; the check afterwards tells
+        pass
+
+
+def run(args: argparse.Namespace) -> int:
     game_dir = args.results / run_folder(args.models) / args.game
     if not game_dir.is_dir():
         raise UserError(f"{game_dir}: no such folder (nothing was played for this game and model; use clem run)")
     expected, problems, run_json = _problems(game_dir)
     instance_path, _ = provenance.played_instance_file(game_dir, run_json)
+    # first score what was played: a harness_error among them (no answer from the model server) is played again below
+    rescore = [p for p in problems if not needs_play(game_dir, p)]
+    score(args.game, game_dir, rescore)
+    if rescore:
+        expected, problems, run_json = _problems(game_dir)
     replay = [p for p in problems if needs_play(game_dir, p)] + unanswered(game_dir, problems)
-    rescore = [p for p in problems if p not in replay]
-    print(f"sartco resume: {game_dir}: {expected} episodes in {instance_path.name}, {len(replay)} to play, "
-          f"{len(rescore)} to score" + ("" if run_json else " (no run.json: the game's default instance file)"))
-    if replay:
-        generation = (run_json or {}).get("generation") or {}
-        gen_args = dict(temperature=args.temperature if args.temperature is not None else generation.get("temperature", 0.0),
-                        max_tokens=args.max_tokens if args.max_tokens is not None else generation.get("max_tokens", 300))
-        for p in replay:  # a stale scores.json or error.json of the failed play must not survive it
-            shutil.rmtree(episode_folder(game_dir, p), ignore_errors=True)
-        wanted = {(p["experiment"], p["game_id"]) for p in replay}
-        # the game's benchmark records this session in run.json as a resume of len(replay) episodes
-        selector = resume_selector(args.game, args.results, len(replay))
-        try:
-            clem_cli.run(selector, ModelSpec.from_strings(args.models), gen_args=gen_args,
-                         instances_filename=str(instance_path.with_suffix("")), results_dir_path=args.results,
-                         batch_size=args.batch_size,
-                         instances_filter=lambda row: (row["experiment"]["name"], row["game_instance"]["game_id"]) in wanted)
-        except SystemExit:  # clemcore exits 1 after logging an episode's exception; the check below tells
-            pass
-    files = [episode_folder(game_dir, p) / "interactions.json" for p in replay + rescore]
-    files = [f for f in files if f.is_file()]
-    if files:
-        spec = next(s for s in GameRegistry.from_directories_and_cwd_files().get_game_specs_that_unify_with(args.game)
-                    if s.game_name == args.game)
-        with GameBenchmark.load_from_spec(spec) as bench:
-            bench.compute_scores(files)
+    groups: dict[tuple, list[dict]] = {}
+    for p in replay:
+        groups.setdefault(settings(args, game_dir, run_json, p["experiment"]), []).append(p)
+    shown = ("; ".join(f"temperature {t}, max_tokens {m}, batch size {b}" for t, m, b in groups) or "nothing to play")
+    chosen = provenance.selection(run_json) if run_json else None
+    scope = f"experiment {', '.join(sorted(chosen))}" if chosen else "all experiments"
+    print(f"sartco resume: {game_dir}: {expected} episodes in {instance_path.name} ({scope}), {len(replay)} to play, "
+          f"{len(rescore)} to score ({shown})" + ("" if run_json else " (no run.json: the game's default instance file)"),
+          flush=True)
+    for p in replay:  # a stale scores.json or error.json of the failed play must not survive it
+        shutil.rmtree(episode_folder(game_dir, p), ignore_errors=True)
+    for (temperature, max_tokens, batch_size), episodes in groups.items():
+        play(args, instance_path, episodes, temperature, max_tokens, batch_size)
+    score(args.game, game_dir, replay)
     _, left, _ = _problems(game_dir)
     if left:
         print(f"sartco resume: still {len(left)} of {expected} episodes not scored (first: {left[0]['experiment']} "
@@ -119,9 +165,9 @@ def run(args: argparse.Namespace) -> int:
         return INCOMPLETE_STATUS
     still = unanswered(game_dir, [])
     if still:
-        print(f"sartco resume: the model server gave no answer again to {len(still)} of {expected} episodes "
-              f"(harness_error; first: {still[0]['experiment']} game_id {still[0]['game_id']}); run sartco resume again",
-              flush=True)
+        print(f"sartco resume: the model server gave no answer again to {len(still)} of the {len(replay)} episodes "
+              f"played (harness_error; first: {still[0]['experiment']} game_id {still[0]['game_id']}); check the "
+              f"server (its address: run.json's models, base_url), then run sartco resume again", flush=True)
         return INCOMPLETE_STATUS
     print(f"sartco resume: {game_dir}: all {expected} episodes scored")
     return 0

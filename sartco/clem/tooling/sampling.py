@@ -50,12 +50,13 @@ def clem(argv: list[str]) -> None:
     clem_bin = Path(sys.executable).parent / "clem"
     done = subprocess.run([str(clem_bin), *argv])
     if done.returncode != 0:
-        raise UserError(f"clem {' '.join(argv)} failed (exit {done.returncode})")
+        raise UserError(f"clem {' '.join(argv)} failed (exit {done.returncode}; clem's message is above): fix what it "
+                        f"names, then complete that sample with `sartco resume`, or remove the samples folder and sample again")
 
 
 def run(args: argparse.Namespace) -> int:
     if args.samples < 1:
-        raise UserError(f"-n {args.samples}: at least one sample expected")
+        raise UserError(f"-n {args.samples}: at least one sample expected (give -n 1 or more)")
     root = args.results / SAMPLES
     if root.exists():
         raise UserError(f"{root} exists already: choose another -r or remove it")
