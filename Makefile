@@ -20,9 +20,10 @@ install: $(STAMP)
 main: $(STAMP)
 	PATH="$(abspath $(BIN)):$$PATH" RESULTS="$(RESULTS)" bash scripts/main.sh
 
-## Unit, property and end-to-end tests.
+## Unit, property and end-to-end tests, on every core (pytest-xdist): each test file on one worker,
+## the longest files first (tests/conftest.py); ends with the 15 slowest tests.
 test: $(STAMP)
-	$(BIN)/python -m pytest
+	$(BIN)/python -m pytest -n auto --dist loadfile --no-loadscope-reorder --durations=15
 
 ## ruff with the rules of pyproject.toml ([tool.ruff]); CI runs it before the tests.
 lint: $(STAMP)
