@@ -20,9 +20,10 @@ install: $(STAMP)
 main: $(STAMP)
 	PATH="$(abspath $(BIN)):$$PATH" RESULTS="$(RESULTS)" bash scripts/main.sh
 
-## Unit, property and end-to-end tests.
+## Unit, property and end-to-end tests, on every core (pytest-xdist): each test file on one worker,
+## the longest files first (tests/conftest.py); ends with the 15 slowest tests.
 test: $(STAMP)
-	$(BIN)/python -m pytest
+	$(BIN)/python -m pytest -n auto --dist loadfile --no-loadscope-reorder --durations=15
 
 ## The trainers' interfaces against the real libraries: one GRPO step of a tiny model on CPU, verl's
 ## reward managers (the `train` extra: torch's CPU build, trl, verl; see the README for its size).

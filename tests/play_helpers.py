@@ -6,11 +6,13 @@
                                                   one (sartco.episode.InstructEpisode), with
                                                   the `script` mock answers instead of gold code
 - fence(code)                                     an answer with its code in a fenced block
-- sh(*args) / clem(*args)                          a command (clemcore's CLI) that must succeed
+- sh(*args)                                       a command that must succeed
+- clem(*args)                                     clemcore's CLI in this process, must succeed
 """
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -79,9 +81,24 @@ def sh(*args, cwd=REPO, timeout=900) -> subprocess.CompletedProcess:
     return done
 
 
-def clem(*args, cwd=REPO) -> subprocess.CompletedProcess:
-    """clemcore's CLI (`clem ...`) with this interpreter."""
-    return sh(sys.executable, "-c", "from clemcore.cli import main; main()", *args, cwd=cwd)
+def clem(*args, cwd=REPO) -> None:
+    """clemcore's CLI (`clem ...`: clemcore.cli.main reading its command line) in this process, from
+    `cwd` (where clem finds the registries); fails the test when it exits non-zero. For the tests
+    that check what the commands write, not the process: a `clem` process spends about 4 s
+    importing clemcore.clemgame, this one imported it once. argv[0] is not `clem`, as under the
+    `python -c "from clemcore.cli import main; main()"` this replaces: no run.json (the tests that
+    check it run the real `clem`, tests/games/test_runs.py)."""
+    from clemcore.cli import main
+    argv, here = sys.argv, os.getcwd()
+    sys.argv = ["clemcore.cli", *map(str, args)]
+    os.chdir(cwd)
+    try:
+        main()
+    except SystemExit as stop:
+        assert stop.code in (None, 0), f"clem {' '.join(map(str, args))} exited with {stop.code}"
+    finally:
+        sys.argv = argv
+        os.chdir(here)
 
 
 def stub_scratch(folder: Path, base_url: str, experiments: list[str], episodes: int = 2, **config) -> tuple[dict, Path]:

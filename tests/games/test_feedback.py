@@ -11,7 +11,8 @@ from pathlib import Path
 import pytest
 
 from feedback_cases import GOLD, HOSTILE, NO_CODE, PARTIAL, TARGET, WRONG, WRONG_CATEGORY, assert_no_target
-from play_helpers import fence, scripted_episode, sh
+from play_helpers import clem, fence, scripted_episode, sh
+from sartco.cli import main as sartco_main
 from sartco.clem.core.building import build
 
 EXPERIMENT = {"name": "scripted_feedback", "board_type": "simple", "object_type": "simple", "task": "first_order",
@@ -161,12 +162,14 @@ def test_report_repair_table(play_episodes, tmp_path):
 def test_feedback_experiment_end_to_end(tmp_path):
     results, out = tmp_path / "results", tmp_path / "scores"
     experiment = "rb_co_repetition_template_feedback"
-    clem, sartco = (str(Path(sys.executable).parent / name) for name in ("clem", "sartco"))
-    sh(clem, "run", "-g", "cobot_instruct_feedback", "-m", "mock", "-e", experiment, "-r", str(results), "-l", "512")
-    sh(clem, "score", "-g", "cobot_instruct_feedback", "-r", str(results))
-    sh(clem, "transcribe", "-g", "cobot_instruct_feedback", "-r", str(results))
-    sh(clem, "eval", "-r", str(results))
-    sh(sartco, "report", "-r", str(results), "--out", str(out))
+    # the `clem` process for the run (it checks the instance file and writes run.json); the other
+    # commands are the same code in this process
+    sh(str(Path(sys.executable).parent / "clem"), "run", "-g", "cobot_instruct_feedback", "-m", "mock", "-e", experiment,
+       "-r", str(results), "-l", "512")
+    clem("score", "-g", "cobot_instruct_feedback", "-r", str(results))
+    clem("transcribe", "-g", "cobot_instruct_feedback", "-r", str(results))
+    clem("eval", "-r", str(results))
+    assert sartco_main(["report", "-r", str(results), "--out", str(out)]) == 0
     files = sorted(results.rglob("scores.json"))
     assert len(files) == 130
     for path in files[:10]:

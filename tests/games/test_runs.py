@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from play_helpers import REPO, sh
+from play_helpers import REPO, clem, sh
 
 BIN = Path(sys.executable).parent
 GAME = "cobot_instruct"
@@ -23,8 +23,8 @@ def sartco(*args) -> subprocess.CompletedProcess:
 
 
 def played(results: Path) -> Path:
-    sh(str(BIN / "clem"), "run", "-g", GAME, "-m", "mock", "-i", "instances_smoke", "-r", str(results))
-    sh(str(BIN / "clem"), "score", "-r", str(results))
+    sh(str(BIN / "clem"), "run", "-g", GAME, "-m", "mock", "-i", "instances_smoke", "-r", str(results))  # run.json: `clem`
+    clem("score", "-r", str(results))
     return results / "mock" / GAME
 
 

@@ -7,12 +7,13 @@ import os
 import re
 import shutil
 import subprocess
-import sys
 import threading
 from functools import partial
 from pathlib import Path
 
 import pytest
+
+from play_helpers import clem
 
 REPO = Path(__file__).resolve().parents[2]
 GAME, EXPERIMENT = "cobot_instruct_ablations", "rb_so_repetition_template_examples_0"  # 10 val episodes, loops in the gold code
@@ -71,12 +72,9 @@ window.addEventListener("load", () => {
 @pytest.mark.slow
 def test_transcript_of_a_copied_results_folder_in_a_browser(tmp_path):
     browser = chromium()
-    bin_dir = Path(sys.executable).parent
     results = tmp_path / "results"
     for step in (["run", "-m", "mock", "-e", EXPERIMENT], ["score"], ["transcribe"]):
-        done = subprocess.run([str(bin_dir / "clem"), step[0], "-g", GAME, *step[1:], "-r", str(results)],
-                              cwd=REPO, capture_output=True, text=True, timeout=600)
-        assert done.returncode == 0, done.stderr[-2000:]
+        clem(step[0], "-g", GAME, *step[1:], "-r", str(results))
     published = tmp_path / "elsewhere" / "runs"
     shutil.copytree(results, published)
     shutil.rmtree(results)  # nothing may point back to where it was scored

@@ -4,13 +4,10 @@ sandbox's message about it) and of the paper protocol (the paper_turn event: wha
 scorer read) go through clemcore's real loop, `clem transcribe`, and headless Chromium's DOM.
 Before, the paper_turn event logged the read answer unescaped: `<img src=x onerror=...>` ran."""
 import html.parser
-import subprocess
-import sys
-from pathlib import Path
 
 import pytest
 
-from play_helpers import fence, play, scripted_episode
+from play_helpers import clem, fence, play, scripted_episode
 from test_transcript import browse, chromium
 
 from sartco.clem.paper.game import instance_fields, experiment_fields
@@ -60,9 +57,7 @@ def test_markup_in_answers_never_reaches_the_dom(tmp_path):
     code = event["content"].split('<code class="language-python">')[1]
     assert code.lstrip().startswith("def f(board):\n    # &lt;img src=x")  # a code block that keeps its lines
 
-    done = subprocess.run([str(Path(sys.executable).parent / "clem"), "transcribe", "-r", str(results)],
-                          capture_output=True, text=True, timeout=600)
-    assert done.returncode == 0, done.stderr[-2000:]
+    clem("transcribe", "-r", str(results))
     pages = sorted(results.rglob("transcript.html"))
     assert len(pages) == 2
     for page in pages:

@@ -3,12 +3,13 @@ temporary folder, used from a folder that is not the checkout (PYTHONPATH unset)
 dataset and the instances of both games, plays a smoke run of cobot_instruct and cobot_describe
 with mock and rulebased through a game_registry.json there, and scores, transcribes and reports.
 
-Slow: 5.5 to 7 minutes on 2 shared cores (building the wheel about 10 s, installing it with its
-dependencies into the fresh venv about 3 minutes, generating, playing and reporting 2 to 4)."""
+Slow: the longest test module (building the wheel about 10 s, installing it with its dependencies
+into the fresh venv, generating, playing and reporting); `make test` starts it first (tests/conftest.py)."""
 from __future__ import annotations
 
 import json
 import os
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -25,18 +26,39 @@ def run(*args, cwd: Path, env: dict, timeout: int = 900) -> subprocess.Completed
     return done
 
 
+def source_copy(folder: Path) -> Path:
+    """What the wheel is built from, copied out of the checkout: setuptools writes build/ and
+    *.egg-info beside the sources, which must not change under the tests running beside this one."""
+    from sartco.settings import GAME_FILES, GAME_NAMES  # the one list of what ships (setup.py)
+    folder.mkdir()
+    for name in ("pyproject.toml", "setup.py", "MANIFEST.in", "README.md"):
+        shutil.copy(REPO / name, folder / name)
+    for name in ("sartco", "resources"):
+        shutil.copytree(REPO / name, folder / name, ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))
+    for game in GAME_NAMES:
+        (folder / "games" / game).mkdir(parents=True)
+        for name in GAME_FILES:
+            shutil.copy(REPO / "games" / game / name, folder / "games" / game / name)
+    return folder
+
+
 @pytest.fixture(scope="module")
 def installed(tmp_path_factory):
-    """(bin folder of a fresh venv holding the wheel, an environment that knows nothing of the checkout)."""
+    """(bin folder of a fresh venv holding the wheel, an environment that knows nothing of the checkout).
+    The venv gets no pip of its own: this interpreter's pip installs into it (ensurepip took 30 s of
+    40 on the loaded 2 cores). Not --no-compile: with PYTHONDONTWRITEBYTECODE set (as here) every
+    command would compile clemcore and its imports again (user CPU of the import 4.9 -> 9.2 s)."""
     root = tmp_path_factory.mktemp("wheel")
     env = {k: v for k, v in os.environ.items()
            if k not in ("PYTHONPATH", "VIRTUAL_ENV", "SARTCO_DATA", "SARTCO_RESOURCES", "CLEMBENCH_HOME")}
-    run(sys.executable, "-m", "pip", "wheel", "-q", "--no-deps", "-w", root / "dist", REPO, cwd=root, env=env)
+    source = source_copy(root / "source")
+    run(sys.executable, "-m", "pip", "wheel", "-q", "--no-deps", "-w", root / "dist", source, cwd=root, env=env)
     wheels = sorted((root / "dist").glob("sartco_bench-*.whl"))
     assert len(wheels) == 1
-    run(sys.executable, "-m", "venv", root / "venv", cwd=root, env=env)  # no --system-site-packages
+    run(sys.executable, "-m", "venv", "--without-pip", root / "venv", cwd=root, env=env)  # no --system-site-packages
     bin_dir = root / "venv" / "bin"
-    run(bin_dir / "python", "-m", "pip", "install", "-q", wheels[0], cwd=root, env=env, timeout=1800)
+    run(sys.executable, "-m", "pip", "--python", bin_dir / "python", "install", "-q", wheels[0],
+        cwd=root, env=env, timeout=1800)
     env["PATH"] = f"{bin_dir}{os.pathsep}{env.get('PATH', '')}"
     return bin_dir, env
 

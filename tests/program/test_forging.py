@@ -252,7 +252,7 @@ def test_an_honest_board_passes_the_check():
     assert board_result(board) == (board.cells(), 4, None)
 
 
-@pytest.mark.parametrize("forge", [_forge_purple_screw, _forge_surrogate, _forge_list_piece], ids=str)
+@pytest.mark.parametrize("forge", [_forge_purple_screw, _forge_surrogate, _forge_list_piece], ids=lambda forge: forge.__name__)
 def test_the_worker_runs_the_check(monkeypatch, forge):
     """A leak of the storage (simulated: put forges the cell) ends forbidden with what put placed."""
     def leaky_put(board, *args):
