@@ -51,13 +51,13 @@ def scores(answer: str, gold: str) -> dict:
     detail = code_bleu_detail(answer, gold)
     record = build(answer, execute(gold).cells)
     return {"codebleu": {part: getattr(detail, part) for part in CODEBLEU_PARTS},
-            "exact_match": exact_match(answer, gold), "es": record.es, "category": record.category,
-            "cell_f1": record.f1}
+            "codebleu_reason": detail.reason, "exact_match": exact_match(answer, gold), "es": record.es,
+            "category": record.category, "cell_f1": record.f1}
 
 
 def differences(expected: dict, got: dict) -> list[str]:
-    diffs = [f"{key} {got[key]!r} (recorded {expected[key]!r})"
-             for key in ("exact_match", "es", "category") if got[key] != expected[key]]
+    diffs = [f"{key} {got[key]!r:.160} (recorded {expected[key]!r})"
+             for key in ("codebleu_reason", "exact_match", "es", "category") if got[key] != expected[key]]
     for part in CODEBLEU_PARTS:
         old, new = expected["codebleu"][part], got["codebleu"][part]
         if not math.isclose(old, new, rel_tol=0.0, abs_tol=TOLERANCE):
