@@ -62,6 +62,9 @@ cleanup() {
 }
 trap cleanup EXIT
 trap 'exit 130' INT TERM
+server_alive() {  # llama_slots prints its line the moment a server dies, then stops the others
+  kill -0 "$SERVER_PID" 2>/dev/null && ! grep -qa '^llama_slots: .* died' "$WORK/server.log"
+}
 server_died() {  # one message, then stop: $1 says when
   echo; echo "== stopped: the llama.cpp server (llama-cpp-python $HAVE) died $1: $(grep -a 'llama_slots:' "$WORK/server.log" | tail -1)"
   echo "   its log ends with:"; tail -5 "$WORK/server.log" | sed 's/^/   | /'
@@ -76,7 +79,7 @@ python "$ROOT/scripts/llama_slots.py" --port "$PORT" --slots "$SLOTS" -- --model
   --n_ctx 8192 --n_threads 1 --n_threads_batch 1 > "$WORK/server.log" 2>&1 &
 SERVER_PID=$!
 for _ in $(seq 1 300); do
-  kill -0 "$SERVER_PID" 2>/dev/null || server_died "while loading the model"
+  server_alive || server_died "while loading the model"
   if curl -sf "http://127.0.0.1:$PORT/v1/models" > /dev/null; then break; fi
   sleep 1
 done
@@ -85,8 +88,9 @@ curl -sf "http://127.0.0.1:$PORT/v1/models" > /dev/null || { echo "== stopped: t
 if ! curl -sf --max-time 300 "http://127.0.0.1:$PORT/v1/chat/completions" -H 'Content-Type: application/json' \
     -d '{"messages": [{"role": "user", "content": "Say OK."}], "max_tokens": 8, "temperature": 0}' > "$WORK/check.json"; then
   sleep 1
-  kill -0 "$SERVER_PID" 2>/dev/null || server_died "on its first chat completion"
-  echo "== stopped: the llama.cpp server did not answer a first chat completion in 300 s"; exit 1
+  server_alive || server_died "on its first chat completion"
+  echo "== stopped: the llama.cpp server gave no answer to a first chat completion (an HTTP error, or none in 300 s); its log ends with:"
+  tail -5 "$WORK/server.log" | sed 's/^/   | /'; exit 1
 fi
 echo "== the server answers a chat completion: $(python -c 'import json,sys; print(repr(json.load(sys.stdin)["choices"][0]["message"]["content"])[:60])' < "$WORK/check.json")"
 
@@ -120,7 +124,7 @@ for game in $GAMES; do
   clem run -g "$game" -m $models -i "$local_file" -r "$OUT" -l "$MAX_TOKENS" -b "$SLOTS" &
   CLEM_PID=$!
   while kill -0 "$CLEM_PID" 2>/dev/null; do   # the moment the server dies, the run stops
-    kill -0 "$SERVER_PID" 2>/dev/null || { kill "$CLEM_PID" 2>/dev/null || true; wait "$CLEM_PID" 2>/dev/null || true; server_died "while playing $game"; }
+    server_alive || { kill "$CLEM_PID" 2>/dev/null || true; wait "$CLEM_PID" 2>/dev/null || true; server_died "while playing $game"; }
     sleep 1
   done
   wait "$CLEM_PID"

@@ -25,6 +25,8 @@ parser = argparse.ArgumentParser()
 parser.add_argument("--port", type=int)
 args, _ = parser.parse_known_args()
 CRASH_AT = int(os.environ.get("FAKE_CRASH_AT", "0"))
+if os.environ.get("FAKE_IGNORE_TERM"):   # as a server busy with a request: stopped only by SIGKILL
+    signal.signal(signal.SIGTERM, signal.SIG_IGN)
 DELAY = float(os.environ.get("FAKE_DELAY", "0"))
 seen = 0
 class H(BaseHTTPRequestHandler):
@@ -126,19 +128,20 @@ def slices() -> set[Path]:
     return set((ROOT / "games").glob("*/in/instances*_local*.json"))
 
 
-def run_local(site: Path, tmp_path: Path, crash_at: int) -> tuple[subprocess.CompletedProcess, float]:
+def run_local(site: Path, tmp_path: Path, crash_at: int, **extra) -> tuple[subprocess.CompletedProcess, float]:
     """The script with the stand-in server; it leaves no slice of its own behind (a real make local
     beside it keeps its own)."""
     before, start = slices(), time.monotonic()
     done = subprocess.run(["bash", str(ROOT / "scripts" / "local_model.sh")], capture_output=True, text=True, timeout=600,
                           env=env_with(site, FAKE_CRASH_AT=crash_at, PORT=free_port(), GAMES="cobot_instruct",
-                                       EPISODES=3, OUT=tmp_path / "out", SLOTS=2))
+                                       EPISODES=3, OUT=tmp_path / "out", SLOTS=2, **extra))
     assert slices() <= before
     return done, time.monotonic() - start
 
 
 def test_local_model_stops_at_once_when_the_first_chat_completion_crashes_the_server(fake_llama, tmp_path):
-    done, _ = run_local(fake_llama, tmp_path, crash_at=1)
+    # the other server ignores SIGTERM: llama_slots takes 10 s to stop it, the message comes at once all the same
+    done, _ = run_local(fake_llama, tmp_path, crash_at=1, FAKE_IGNORE_TERM=1)
     assert done.returncode == 1, done.stdout + done.stderr
     stopped = [line for line in done.stdout.splitlines() if line.startswith("== stopped")]
     assert len(stopped) == 1 and "died on its first chat completion" in stopped[0], done.stdout
