@@ -121,7 +121,8 @@ for game in $GAMES; do
   case "$game" in cobot_describe*) models="${DESCRIBE_MODELS//LOCAL/$MODEL_NAME}" ;; esac
   [ "$game" = cobot_describe_dialogue ] && local_file="$DIALOGUE_SLICE"
   # shellcheck disable=SC2086  # one or two model names
-  clem run -g "$game" -m $models -i "$local_file" -r "$OUT" -l "$MAX_TOKENS" -b "$SLOTS" &
+  # (exec: the background job is clem itself, never a copy of this shell that would run its EXIT trap)
+  (trap - EXIT INT TERM; exec clem run -g "$game" -m $models -i "$local_file" -r "$OUT" -l "$MAX_TOKENS" -b "$SLOTS") &
   CLEM_PID=$!
   while kill -0 "$CLEM_PID" 2>/dev/null; do   # the moment the server dies, the run stops
     server_alive || { kill "$CLEM_PID" 2>/dev/null || true; wait "$CLEM_PID" 2>/dev/null || true; server_died "while playing $game"; }
