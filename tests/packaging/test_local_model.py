@@ -1,7 +1,7 @@
 """scripts/local_model.sh (`make local`) and scripts/llama_slots.py against a stand-in llama.cpp
 server: a `llama_cpp` package on PYTHONPATH whose `python -m llama_cpp.server` answers /v1/models
 and chat completions, and kills itself with SIGSEGV on its N-th chat completion (FAKE_CRASH_AT),
-as llama-cpp-python 0.3.36 does on its first one here. No model, no build: the script's own
+as llama-cpp-python 0.3.36 did on its first one in issue 33's run. No model, no build: the script's own
 behaviour: check a chat completion before playing, stop with one message the moment the server
 dies (never a retry per episode), one server per slot behind one address."""
 from __future__ import annotations
