@@ -4,16 +4,28 @@ VENV   ?= .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 RESULTS ?= results
+## The versions a working install used (constraints.txt: what decides a score or runs a model, and
+## what they need); `make install CONSTRAINTS=` installs the newest that pyproject.toml allows.
+CONSTRAINTS ?= constraints.txt
 
-.PHONY: install main test test-train lint local clean-results
+.PHONY: install main test test-train lint local upgrade-check clean-results
 
-$(STAMP): pyproject.toml setup.py
+$(STAMP): pyproject.toml setup.py $(CONSTRAINTS)
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install -q --upgrade pip
-	$(BIN)/python -m pip install -q -e ".[dev,ray]"
+	$(BIN)/python -m pip install -q $(if $(CONSTRAINTS),-c $(CONSTRAINTS)) -e ".[dev,ray]"
 	touch $(STAMP)
 
 install: $(STAMP)
+
+## Newer versions than constraints.txt pins, in a venv of their own (.venv-upgrade): the packages
+## that would change ("> name==version"), then whether a recorded score moves with them.
+upgrade-check:
+	rm -rf .venv-upgrade && $(PYTHON) -m venv .venv-upgrade
+	.venv-upgrade/bin/python -m pip install -q --upgrade pip
+	.venv-upgrade/bin/python -m pip install -q -e ".[dev]"
+	.venv-upgrade/bin/python -m pip freeze --exclude-editable | grep -vxFf constraints.txt || true
+	.venv-upgrade/bin/python -m pytest -p no:cacheprovider tests/scores/test_pinned_scores.py
 
 ## The main job: both games with the built-in players over the test split, scored, transcribed,
 ## evaluated and reported; ends by printing the results table.
@@ -43,7 +55,7 @@ lint: $(STAMP)
 
 ## A real small model (Gemma 3 270M on a local llama.cpp server) over a slice of both games.
 local: $(STAMP)
-	PATH="$(abspath $(BIN)):$$PATH" bash scripts/local_model.sh
+	PATH="$(abspath $(BIN)):$$PATH" CONSTRAINTS="$(CONSTRAINTS)" bash scripts/local_model.sh
 
 clean-results:
 	rm -rf $(RESULTS)
