@@ -10,7 +10,9 @@ from __future__ import annotations
 
 import sys
 from collections import defaultdict
+from collections.abc import Mapping
 from pathlib import Path
+from typing import Any
 
 from sartco.clem.core.outcomes import NO_ANSWER
 from sartco.world import ErrorCode
@@ -21,7 +23,7 @@ HARNESS_STATUS = 3  # exit status of `sartco report` when any episode is a harne
 HEADER = ["model", "game", "episodes", "harness_errors", "first_reason"]
 
 
-def is_harness(episode: dict) -> bool:
+def is_harness(episode: Mapping[str, Any]) -> bool:
     return episode["category"] == ErrorCode.HARNESS_ERROR
 
 

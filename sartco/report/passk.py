@@ -20,8 +20,10 @@ from __future__ import annotations
 
 import sys
 from collections import defaultdict
+from collections.abc import Mapping, Sequence
 from math import comb
 from pathlib import Path
+from typing import Any
 
 from sartco.clem.tooling.sampling import SAMPLES  # RESULTS/samples/s1..sN
 
@@ -53,7 +55,7 @@ def sample_folders(results: Path) -> list[Path]:
     return sorted(found, key=lambda p: int(p.name[1:]))
 
 
-def counts(per_sample: list[list[dict]]) -> dict[tuple, dict[str, list[int]]]:
+def counts(per_sample: Sequence[Sequence[Mapping[str, Any]]]) -> dict[tuple, dict[str, list[int]]]:
     """(model, game, experiment) -> episode -> [n, c, harness errors] from the episodes of each
     sample folder (a harness_error sample counts in neither n nor c)."""
     out: dict[tuple, dict[str, list[int]]] = defaultdict(lambda: defaultdict(lambda: [0, 0, 0]))

@@ -142,8 +142,12 @@ def test_resume_options_travel_in_the_game_spec(monkeypatch):
 
     monkeypatch.chdir(REPO)
     registry = GameRegistry.from_directories_and_cwd_files()
-    [spec] = registry.get_game_specs_that_unify_with(resume_selector("cobot_instruct", Path("res"), 3), verbose=False)
-    assert spec.game_path == str(GAME) and run_options(spec, ["pytest"]) == RunOptions(Path("res"), None, 3)
+    episodes = [["sb_so_first_order_template", 0], ["rb_so_repetition_template", 5]]
+    selector = resume_selector("cobot_instruct", Path("res"), episodes, 2)
+    [spec] = registry.get_game_specs_that_unify_with(selector, verbose=False)
+    assert spec.game_path == str(GAME)
+    assert run_options(spec, ["pytest"]) == RunOptions(Path("res"), None, 2, episodes)
     plain = registry.get_game_specs_that_unify_with("cobot_instruct", verbose=False)[0]
     assert run_options(plain, ["pytest"]) is None
     assert run_options(plain, ["clem", "run", "-g", "x", "-e", "abc", "-r", "out"]) == RunOptions(Path("out"), "abc")
+    assert run_options(plain, ["clem", "run", "-g", "x", "-r", "out", "-b", "4"]) == RunOptions(Path("out"), None, 4)

@@ -211,9 +211,12 @@ class RunRecorder:
             self.write()
 
     def write(self) -> None:
+        path = self.path
+        if path is None:  # no episode yet: nothing to record
+            return
         sessions = self.previous_sessions + [self.session]
         first = sessions[0]
-        data = {"game": self.game_name, "model": self.path.parent.parent.name,
+        data = {"game": self.game_name, "model": path.parent.parent.name,
                 "sartco_version": _version("sartco-bench"), "git_commit": self.software["git_commit"],
                 "clemcore_version": _version("clemcore"), "python": self.software["python"],
                 "packages": self.software["packages"], "seeds": self.software["seeds"],
@@ -222,10 +225,10 @@ class RunRecorder:
                 "counts": {"sessions": len(sessions),
                            "episodes_played": sum(s["episodes_played"] for s in sessions)},
                 "sessions": sessions}
-        self.path.parent.mkdir(parents=True, exist_ok=True)
-        tmp = self.path.with_suffix(".json.tmp")
+        path.parent.mkdir(parents=True, exist_ok=True)
+        tmp = path.with_suffix(".json.tmp")
         tmp.write_text(json.dumps(data, indent=2) + "\n", encoding="utf-8")
-        tmp.replace(self.path)
+        tmp.replace(path)
 
 
 def selecting(run: dict) -> list[dict]:
