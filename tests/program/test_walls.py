@@ -196,11 +196,7 @@ def test_without_seccomp_nothing_runs(monkeypatch):
 
     monkeypatch.setattr(driver, "_bpf", None)
     monkeypatch.setattr(driver, "compile_filter", unusable)
-    sandbox = LocalSandbox(workers=1)
-    try:
-        ex = sandbox.execute("put(board, 'nut', 'red', 0, 0)")
-    finally:
-        sandbox.close()
+    ex = _one_put_in_a_new_sandbox()
     assert (ex.ok, ex.error, ex.cells) == (False, E.HARNESS_ERROR, {})
     assert "cannot confine programs here" in ex.message and "libseccomp" in ex.message
 
@@ -211,12 +207,16 @@ def test_a_filter_that_does_not_hold_is_refused(monkeypatch):
 
     allow_all = bytes([0x06, 0, 0, 0, 0, 0, 0xFF, 0x7F])  # BPF_RET | BPF_K, SECCOMP_RET_ALLOW
     monkeypatch.setattr(driver, "_bpf", allow_all)
+    ex = _one_put_in_a_new_sandbox()
+    assert (ex.ok, ex.error) == (False, E.HARNESS_ERROR) and "could open a file" in ex.message, ex
+
+
+def _one_put_in_a_new_sandbox():
     sandbox = LocalSandbox(workers=1)
     try:
-        ex = sandbox.execute("put(board, 'nut', 'red', 0, 0)")
+        return sandbox.execute("put(board, 'nut', 'red', 0, 0)")
     finally:
         sandbox.close()
-    assert (ex.ok, ex.error) == (False, E.HARNESS_ERROR) and "could open a file" in ex.message, ex
 
 
 @pytest.mark.parametrize("raised", ["SystemExit", "KeyboardInterrupt", "GeneratorExit", "BaseException"])
