@@ -26,11 +26,10 @@ class Limits:
     depth       nested Python calls the program may make (recursion)
     length      longest range / list / tuple / str / bytes a checked operation may create
     int_bits    largest integer (in bits) that `*`, `**` and `<<` may create
-    wall_time   seconds per program, enforced by killing the worker process (catches loops
-                inside C code that no Python-level counter sees); in a batch, the first
-                program of each chunk shares it with compiling the chunk ahead (at most a
-                tenth of it; a kill there reruns the chunk program by program, see driver.py)
-    memory      bytes of address space the worker may add (RLIMIT_AS)
+    wall_time   seconds per program, from the fork of its process: the template kills the
+                process then (catches loops inside C code that no Python-level counter sees);
+                its CPU time is capped at the wall time rounded up + 1 s (RLIMIT_CPU)
+    memory      bytes of address space the program's process may add to the template's (RLIMIT_AS)
     source      characters of source text
     """
 
