@@ -6,8 +6,12 @@ of the sandbox in use (sandbox.py).
 `workers` templates (default: min(2, CPUs)), each driven by one thread that reads the answers while
 a second one writes the chunks (so a template finds its next chunk waiting). The shares are
 balanced by size, since a program's cost grows with its text (parsing and compiling are much of
-it). With `cache` (the default) equal sources of one call run once and share their Execution:
-the same program gives the same board everywhere. What the program did not cause (no template
+it). With `cache` (the default) equal sources run once and share their Execution, within a call
+and across calls (a memo of the last MEMO verdicts per sandbox, keyed by the source, the board's
+size, the limits, the semantics and the mode): the same program gives the same board everywhere.
+The probes run the gold function at the same arguments for every answer to a board, and a gold
+answer's probes are those very programs. Only verdicts that the program alone decides are kept:
+never `timeout`, `resource_limit` (they depend on the machine's load) or `harness_error`. What the program did not cause (no template
 could start or confine, a garbled answer, a failure of the pool itself) is `harness_error`.
 Nothing raises out of `execute`/`execute_many`.
 
@@ -17,9 +21,11 @@ killed at exit or by `close()`. After a fork the child starts its own.
 from __future__ import annotations
 
 import atexit
+import copy
 import json
 import os
 import threading
+from collections import OrderedDict
 
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, Board, ErrorCode, WorldError
 
@@ -28,6 +34,8 @@ from .execution import MODULE, SEMANTICS, Execution, Limits, not_a_str
 from .verdict import failed
 
 BATCH = 32  # a call with fewer items than this uses one template
+MEMO = 50_000  # verdicts a LocalSandbox keeps for repeated programs (a few KB each)
+TRANSIENT = frozenset({ErrorCode.TIMEOUT, ErrorCode.RESOURCE_LIMIT, ErrorCode.HARNESS_ERROR})
 
 
 def default_workers() -> int:
@@ -44,6 +52,23 @@ class LocalSandbox:
         self._templates: list[Worker] = []
         self._pid = os.getpid()
         self._lock = threading.Lock()
+        self._memo: OrderedDict[tuple, Execution] = OrderedDict()
+        self._memo_lock = threading.Lock()
+
+    def _recall(self, key: tuple) -> Execution | None:
+        with self._memo_lock:
+            ex = self._memo.get(key)
+            if ex is not None:
+                self._memo.move_to_end(key)
+        return None if ex is None else Execution(ex.ok, ex.error, ex.message, copy.deepcopy(ex.cells), ex.puts)
+
+    def _remember(self, key: tuple, ex: Execution) -> None:
+        if ex.error in TRANSIENT:
+            return
+        with self._memo_lock:
+            self._memo[key] = Execution(ex.ok, ex.error, ex.message, copy.deepcopy(ex.cells), ex.puts)
+            while len(self._memo) > MEMO:
+                self._memo.popitem(last=False)
 
     def templates(self, n: int) -> list[Worker]:
         with self._lock:
@@ -118,12 +143,16 @@ class LocalSandbox:
                     results[i] = failed(ErrorCode.TYPE_ERROR, not_a_str(p))
                 elif cache and p in first:
                     copies.append((i, first[p]))
+                elif cache and (known := self._recall((p, rows, cols, limits, semantics, mode))) is not None:
+                    results[i] = known
                 else:
                     first.setdefault(p, i)
                     todo.append(i)
             items = [json.dumps(programs[i]).encode() for i in todo]
             for i, answer in zip(todo, dispatch(self, items, rows, cols, limits, workers, semantics, mode)):
                 results[i] = answer
+                if cache and type(answer) is Execution:
+                    self._remember((programs[i], rows, cols, limits, semantics, mode), answer)
             for i, source in copies:
                 results[i] = results[source]
             return [r if type(r) is Execution else failed(ErrorCode.HARNESS_ERROR, "the sandbox returned no result")
