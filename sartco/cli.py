@@ -29,6 +29,7 @@ COMMANDS = {
     "score-responses": ("sartco.protocols.score", "score raw answers (JSON lines) in a protocol (paper or sartco)"),
     "bench-reward": ("sartco.reward.bench", "rewards/s of sartco.reward over the gold and the erring players' answers"),
     "export-dataset": ("sartco.reward.dataset", "cobot_instruct episodes as a Hugging Face dataset (JSON lines, parquet)"),
+    "suite": ("sartco.suite", "make main's job: many clem runs, scored, transcribed, evaluated, reported, on every core"),
     "bench-run": ("sartco.clem.tooling.benchrun", "clem run against a stub model server: sequential vs the batching backend"),
     "register": ("sartco.register", "write sartco's models and backends into a folder's clemcore files (model_registry.json)"),
     "games": ("sartco.register:games", "copy the games into DIR and register them in ./game_registry.json"),

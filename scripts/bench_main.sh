@@ -1,14 +1,19 @@
 #!/usr/bin/env bash
-# The cost of `make main` in one checkout against another, measured in the same command: both
-# run scripts/main.sh (each with its own .venv, `make install` first) into a temporary results
-# folder, every clem / sartco / python command timed (CPU = user + sys, its children included:
-# the sandbox's workers); prints per step the CPU seconds of both and their ratio, then the total.
-# CPU seconds, not wall time: the machines are shared, and the two runs may go side by side.
-#   usage: scripts/bench_main.sh BASE_CHECKOUT NEW_CHECKOUT     (PARALLEL=0: one after the other)
-#   e.g. git worktree add /tmp/base <commit>; scripts/bench_main.sh /tmp/base .
+# The cost of `make main` in one checkout against another, measured in the same command, and
+# whether their results are the same: both run scripts/main.sh (each with its own .venv, `make
+# install` first, not timed) into a temporary results folder, one after the other (the wall
+# times are comparable; PARALLEL=1 runs them side by side, then compare CPU only). Prints:
+# - per step, the wall and CPU seconds (user + sys, children included: the sandbox's processes)
+#   of each checkout: every clem / sartco / python command main.sh starts (timed by
+#   /usr/bin/time), and the tasks `sartco suite` reports, when main.sh runs it;
+# - the whole of main.sh in each: wall and CPU, and new / base;
+# - scripts/compare_results.py on the two results and tables folders (exit 1 when a result differs).
+#   usage: scripts/bench_main.sh BASE_CHECKOUT NEW_CHECKOUT
+#   e.g. git worktree add /tmp/base 2b0163b; scripts/bench_main.sh /tmp/base .
 set -euo pipefail
 [ $# -eq 2 ] || { echo "usage: $0 BASE_CHECKOUT NEW_CHECKOUT" >&2; exit 2; }
 command -v /usr/bin/time >/dev/null || { echo "$0 needs /usr/bin/time (Debian package 'time')" >&2; exit 2; }
+HERE="$(cd "$(dirname "$0")" && pwd)"
 OUT="$(mktemp -d)"
 echo "bench: results and timings under $OUT"
 
@@ -19,15 +24,16 @@ bench() {  # bench NAME CHECKOUT: make main's steps in CHECKOUT, each command's 
   mkdir -p "$shim"
   make -C "$dir" install >/dev/null
   for cmd in clem sartco python; do
-    printf '#!/bin/sh\nexec /usr/bin/time -a -o %s -f "%%U %%S %s %%C" %s/.venv/bin/%s "$@"\n' \
+    printf '#!/bin/sh\nexec /usr/bin/time -a -o %s -f "%%e %%U %%S %s %%C" %s/.venv/bin/%s "$@"\n' \
       "$OUT/$name.times" "$cmd" "$dir" "$cmd" > "$shim/$cmd"
     chmod +x "$shim/$cmd"
   done
   (cd "$dir" && PATH="$shim:$dir/.venv/bin:$PATH" RESULTS="$OUT/$name.results" SCORES="$OUT/$name.scores" \
-    bash scripts/main.sh > "$OUT/$name.out" 2>&1) || { echo "bench: make main failed in $dir ($OUT/$name.out)" >&2; return 1; }
+    /usr/bin/time -o "$OUT/$name.total" -f "%e %U %S" bash scripts/main.sh > "$OUT/$name.out" 2>&1) \
+    || { echo "bench: make main failed in $dir ($OUT/$name.out)" >&2; return 1; }
 }
 
-if [ "${PARALLEL:-1}" = 1 ]; then
+if [ "${PARALLEL:-0}" = 1 ]; then
   bench base "$1" & b=$!
   bench new "$2" & n=$!
   wait $b; wait $n
@@ -35,29 +41,39 @@ else
   bench base "$1"; bench new "$2"
 fi
 
-# a step: the command with its results folder and the checkout's own paths taken out
-python3 - "$OUT/base.times" "$OUT/new.times" <<'EOF'
+python3 - "$OUT" <<'EOF'
 import re, sys
+from pathlib import Path
 
-def load(path):
-    steps = {}
-    for line in open(path):
-        parts = line.split(None, 3)
-        if len(parts) < 4 or not re.match(r"^[\d.]+$", parts[0]):
+out = Path(sys.argv[1])
+
+def steps(name):
+    """(step, wall, cpu) of each command main.sh started, and of each task sartco suite reported."""
+    rows = []
+    for line in (out / f"{name}.times").read_text().splitlines():
+        parts = line.split(None, 4)
+        if len(parts) < 5 or not re.match(r"^[\d.]+$", parts[0]):
             continue   # /usr/bin/time's "Command exited with non-zero status" lines
-        user, sys_, name, command = parts
-        words = command.split()[1:]
-        args = [w for w in words if not w.startswith("/")]
-        key = name + " " + " ".join(args)
-        key = key[:70]
-        steps[key] = steps.get(key, 0.0) + float(user) + float(sys_)
-    return steps
+        wall, user, sys_, cmd, command = parts
+        args = [w for w in command.split()[1:] if not w.startswith("/")]
+        rows.append((f"{cmd} {' '.join(args)}"[:64], float(wall), float(user) + float(sys_)))
+    for m in re.finditer(r"^== (.+?): (?:done|FAILED|exit \d+) in ([\d.]+) s \(([\d.]+) s CPU\)",
+                         (out / f"{name}.out").read_text(), re.M):
+        rows.append(("  suite: " + m.group(1)[:56], float(m.group(2)), float(m.group(3))))
+    return rows
 
-base, new = load(sys.argv[1]), load(sys.argv[2])
-print(f"{'step':70s} {'base s':>8s} {'new s':>8s} {'ratio':>6s}")
-for key in list(dict.fromkeys([*base, *new])):
-    b, n = base.get(key, 0.0), new.get(key, 0.0)
-    print(f"{key:70s} {b:8.1f} {n:8.1f} {n / b if b else float('nan'):6.2f}")
-tb, tn = sum(base.values()), sum(new.values())
-print(f"{'total CPU (user + sys)':70s} {tb:8.1f} {tn:8.1f} {tn / tb:6.3f}")
+def total(name):
+    wall, user, sys_ = (out / f"{name}.total").read_text().split()[-3:]
+    return float(wall), float(user) + float(sys_)
+
+for name in ("base", "new"):
+    print(f"\n{name}: {'step':64s} {'wall s':>8s} {'CPU s':>8s}")
+    for step, wall, cpu in steps(name):
+        print(f"{'':6s}{step:64s} {wall:8.1f} {cpu:8.1f}")
+(bw, bc), (nw, nc) = total("base"), total("new")
+print(f"\n{'make main (scripts/main.sh), install apart':58s} {'base':>9s} {'new':>9s} {'new/base':>9s}")
+print(f"{'wall s':58s} {bw:9.1f} {nw:9.1f} {nw / bw:9.3f}")
+print(f"{'CPU s (user + sys, children included)':58s} {bc:9.1f} {nc:9.1f} {nc / bc:9.3f}")
 EOF
+echo
+python3 "$HERE/compare_results.py" "$OUT/base.results" "$OUT/new.results" "$OUT/base.scores" "$OUT/new.scores"

@@ -31,64 +31,20 @@ SCORES="${SCORES:-scores}"
 SHARED="${SARTCO_DATA:-../shared/sartco-data}/published"   # the data folder: sartco.settings
 test -d "$SHARED" || { echo "make main needs the published SARTCo data at $SHARED (set SARTCO_DATA to the data folder)" >&2; exit 2; }
 
+# everything below in one command on every core: sartco suite (sartco/suite.py) runs what these
+# steps did one after another (sartco import, instancegenerator.py --published / --protocol paper /
+# --fresh, clem run per game and model, clem score, clem transcribe, clem eval per pair, sartco
+# report) through clemcore's own API in one process per core, and writes the same files
 mkdir -p "$RESULTS"
 LOG="$RESULTS/main.log"   # clemcore's progress bars and logs go here; the terminal gets the steps
-: > "$LOG"
-step() { printf '== %s\n' "$*"; }
-run() {
-  "$@" >> "$LOG" 2>&1 || { tail -25 "$LOG"; echo "make main: failed: $*  (full log: $LOG)" >&2; exit 1; }
-}
-
-step "importing the published SARTCo data (derived from ../shared, not committed)"
-run sartco import "$SHARED" --out instances/published --quiet
-run python games/cobot_instruct/instancegenerator.py --published instances/published
-run python games/cobot_instruct/instancegenerator.py --protocol paper
-
-FIRST="${MODELS%% *}"
-PLAYED=()
-play() {  # play GAME MODEL [clem run options...]
-  local game="$1" model="$2"; shift 2
-  step "$game ($model)"
-  run clem run -g "$game" -m "$model" -r "$RESULTS" "$@"
-  PLAYED+=("$game $model")
-}
-for MODEL in $MODELS; do
-  play cobot_instruct "$MODEL"
-  play cobot_instruct_published "$MODEL"
-  play cobot_describe "$MODEL"
-  play cobot_describe_dialogue "$MODEL"
-done
-# fresh boards (issue 24 item 3, sartco.clem.instruct.fresh): cobot_instruct_fresh, the published test boards beside as
-# many fresh boards of FRESH_SEED (same strata; in no published and no seed-42 file: the overlap count printed),
-# template instructions, every model: contamination.md; with cobot_instruct_published: robustness.md
 FRESH_SEED="${FRESH_SEED:-7}"
-step "fresh boards (seed $FRESH_SEED)"
-run python games/cobot_instruct/instancegenerator.py --fresh "$FRESH_SEED"
-grep "^fresh boards" "$LOG" | tail -1   # how many, and the overlap with the published and seed-42 boards (0)
-for MODEL in $MODELS; do play cobot_instruct_fresh "$MODEL"; done
-play cobot_instruct_paper "$FIRST" -t 0 -l 250
-play cobot_instruct_ablations "$FIRST"
-play cobot_instruct_feedback "$FIRST"
-for MODEL in $ERRING; do
-  play cobot_instruct_feedback "$MODEL"
-  play cobot_describe_dialogue "$MODEL"
-done
+# stops (exit 3) when an episode of an instance file is missing, errored, unscored or unreadable
+# (the ids: $SCORES/completeness.md; `sartco resume` completes the run), or is a harness error
+# (the harness failed, not the model: $SCORES/harness.md names them)
+sartco suite -r "$RESULTS" --out "$SCORES" -m $MODELS --erring $ERRING --fresh-seed "$FRESH_SEED" \
+  || { status=$?; tail -25 "$LOG"; echo "make main: sartco suite failed (exit $status; full log: $LOG)" >&2; exit 1; }
 
-step "scoring, transcribing, evaluating"
-run clem score -r "$RESULTS"
-run clem transcribe -r "$RESULTS"
-# one game and model at a time: clem eval adds their episodes to raw.csv and recomputes the table;
-# clemcore builds the rows of what it loads one by one (the cost grows with the square of their
-# number), so a single eval over everything takes many times longer (44 min instead of minutes)
-rm -f "$RESULTS/raw.csv"
-for pair in "${PLAYED[@]}"; do set -- $pair; run clem eval -r "$RESULTS" -g "$1" -m "$2"; done
-# stops (exit 3) when an episode of an instance file is missing, errored, unscored or unreadable:
-# the ids are in the log's last lines and $SCORES/completeness.md; `sartco resume` completes the run
-# sartco report exits 3 when any episode is a harness error (the harness failed, not the model;
-# harness.md names them): then make main fails here, with the report's line at the end of the log
-run sartco report -r "$RESULTS" --out "$SCORES"
-
-step "results: $RESULTS/ (transcripts, results.csv, main.log), tables in $SCORES/"
+printf "== results: %s/ (transcripts, results.csv, main.log), tables in %s/\n" "$RESULTS" "$SCORES"
 echo
 cat "$SCORES/paper_table3.md"   # the paper protocol beside the paper's figures, then ours (table3.md)
 echo

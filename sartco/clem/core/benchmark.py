@@ -131,25 +131,35 @@ class RunOptions(typing.NamedTuple):
     resume_episodes: list | None = None  # sartco resume: [[experiment, game_id], ...] it plays again; None: a clem run
 
 
-# the game spec entry through which `sartco resume` (sartco.clem.tooling.resume) hands its options
-# to the benchmark clemcore builds: {"results_dir": str, "episodes": [[experiment, game_id], ...], "batch_size": int}
-RESUME_KEY = "sartco_resume"
+# the game spec entry through which `sartco resume` (sartco.clem.tooling.resume) and `sartco suite`
+# (sartco.suite) hand a run's options to the benchmark clemcore builds: {"results_dir": str,
+# "experiment": str | null, "batch_size": int, "episodes": [[experiment, game_id], ...] (a resume) or null}
+RUN_KEY = "sartco_run"
+
+
+def run_selector(game_name: str, results_dir: Path, *, experiment: str | None = None, batch_size: int = 1,
+                 episodes: list | None = None) -> GameSpec:
+    """The game selector a caller of clemcore's `run` gives it: the game entry plus RUN_KEY
+    (clemcore unifies it with the registered entry and builds the benchmark from the result)."""
+    return GameSpec(game_name=game_name, allow_underspecified=True,
+                    **{RUN_KEY: {"results_dir": str(results_dir), "experiment": experiment, "batch_size": batch_size,
+                                 "episodes": episodes}})
 
 
 def resume_selector(game_name: str, results_dir: Path, episodes: list, batch_size: int) -> GameSpec:
-    """The game selector `sartco resume` gives clemcore's `run`: the game entry plus RESUME_KEY
-    (clemcore unifies it with the registered entry and builds the benchmark from the result)."""
-    return GameSpec(game_name=game_name, allow_underspecified=True,
-                    **{RESUME_KEY: {"results_dir": str(results_dir), "episodes": episodes, "batch_size": batch_size}})
+    """`sartco resume`'s selector: a run of exactly `episodes` (run.json records it as a resume)."""
+    return run_selector(game_name, results_dir, batch_size=batch_size, episodes=episodes)
 
 
 def run_options(game_spec: GameSpec, argv: list[str] | None = None) -> RunOptions | None:
-    """The run a benchmark is built for: `sartco resume`'s options from the game spec, else `clem
-    run`'s from clem's command line (clem_run_options); None when neither (clem score, sartco
-    check-instances, the gym env)."""
-    resume = getattr(game_spec, RESUME_KEY, None)
-    if resume is not None:
-        return RunOptions(Path(resume["results_dir"]), None, int(resume["batch_size"]), list(resume["episodes"]))
+    """The run a benchmark is built for: the options the game spec carries (RUN_KEY: `sartco
+    resume`, `sartco suite`), else `clem run`'s from clem's command line (clem_run_options); None
+    when neither (clem score, sartco check-instances, the gym env)."""
+    given = getattr(game_spec, RUN_KEY, None)
+    if given is not None:
+        episodes = given.get("episodes")
+        return RunOptions(Path(given["results_dir"]), given.get("experiment"), int(given["batch_size"]),
+                          None if episodes is None else list(episodes))
     return clem_run_options(argv)
 
 

@@ -25,7 +25,8 @@ episode's target (so never the episode's own arguments) and from the kept ones. 
 field `probes`, default DEFAULT_PROBES; 0 turns the probes off), the first kept in draw order,
 from rounds of CANDIDATES x K candidates (ROUNDS at most). Every program runs in the sandbox
 (sartco.clem.core.sandbox.run_many): one batch per round of gold candidates (mostly one), one for the
-K probes; a harness_error raises HarnessFault.
+K probes; a harness_error raises HarnessFault. A process keeps the draws of the boards it probed
+(`gold_draws`): every model's episode on a board, and every game's, compares with the same ones.
 
 sequence_function episodes are not probed: their gold function (and the prompt's examples)
 hard-code the puts and ignore the arguments by the task's design, so there is no general gold
@@ -34,12 +35,18 @@ function to compare with; first-order episodes have no function.
 from __future__ import annotations
 
 import ast
+import copy
+import json
 import random
+import threading
+from collections import OrderedDict
 from dataclasses import dataclass
 
 from sartco import settings
 from sartco.episode import PROBES_KEY
 from sartco.world import COLORS, SUCCESS_CATEGORY, ErrorCode
+
+from sartco.program import current
 
 from .outcomes import HarnessFault
 
@@ -153,13 +160,37 @@ class GoldDraws:
     draws: list
 
 
+# the draws of the boards this process has probed (DRAWS at most), by what decides them: an episode
+# of another model, or of another game on the same board, gets them without running the gold again
+DRAWS = 20_000
+_drawn: OrderedDict[tuple, GoldDraws] = OrderedDict()
+_drawn_lock = threading.Lock()
+
+
+def _draws_key(instance: dict, k: int, seed: int) -> tuple:
+    return (instance["gold_code"], instance["given_code"], instance["rows"], instance["cols"], combo_of(instance),
+            str(instance["board_id"]), instance["task"], json.dumps(instance["target"], sort_keys=True), k, seed,
+            id(current()))
+
+
 def gold_draws(instance: dict, seed: int = PROBE_SEED) -> GoldDraws:
-    """The episode's gold function and draws; HarnessFault when the gold program calls no function."""
+    """The episode's gold function and draws; HarnessFault when the gold program calls no function.
+    Kept per process (DRAWS): the same gold program, board and seed give the same draws."""
     gold_name = probed_function(instance["gold_code"], instance["given_code"])
     if gold_name is None:
         raise HarnessFault("probes: the gold program calls no function")
     k = int(instance.get("probes", DEFAULT_PROBES))
-    return GoldDraws(gold_name, draw_arguments(instance, instance["gold_code"], gold_name, k, seed))
+    key = _draws_key(instance, k, seed)
+    with _drawn_lock:
+        known = _drawn.get(key)
+    if known is not None:
+        return GoldDraws(known.function, copy.deepcopy(known.draws))
+    drawn = GoldDraws(gold_name, draw_arguments(instance, instance["gold_code"], gold_name, k, seed))
+    with _drawn_lock:
+        _drawn[key] = GoldDraws(drawn.function, copy.deepcopy(drawn.draws))
+        while len(_drawn) > DRAWS:
+            _drawn.popitem(last=False)
+    return drawn
 
 
 def run_probes(instance: dict, code: str, seed: int = PROBE_SEED) -> dict:

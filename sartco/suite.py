@@ -1,0 +1,353 @@
+"""`sartco suite`: many `clem run`s and what follows them, in one command, on every core.
+
+    sartco suite -r results --out scores                      # make main's job (scripts/main.sh)
+    sartco suite -r results --out scores -m my-model --only-models --no-erring
+
+does what these commands, one after another, would do, and writes the same files:
+
+    sartco import <data>/published --out instances/published --quiet
+    python games/cobot_instruct/instancegenerator.py --published instances/published
+    python games/cobot_instruct/instancegenerator.py --protocol paper
+    python games/cobot_instruct/instancegenerator.py --fresh 7
+    clem run -g GAME -m MODEL -r RESULTS [-t 0 -l 250]      # for each (game, model) of `plan`
+    clem score -r RESULTS; clem transcribe -r RESULTS
+    rm RESULTS/raw.csv; clem eval -r RESULTS -g GAME -m MODEL  # for each pair, in plan order
+    sartco report -r RESULTS --out SCORES
+
+What makes it faster, with the same results (scripts/compare_results.py compares every file):
+- one process per core (`-j`, default: the CPUs), each importing clemcore once (about 4 s a
+  command otherwise), driving clemcore's own API: `clemcore.cli.run` (with the run's options in
+  the game selector, sartco.clem.core.benchmark.run_selector), `GameBenchmark.compute_scores`
+  and `build_transcripts` on the pair's own folder, right after its play;
+- independent tasks side by side: a pair waits only for the instance file it plays; every pair is
+  played into a folder of its own (RESULTS/.suite/<n>), so that clemcore's results/<model>/run.json
+  is never written by two processes at once, and then moved into place; the run.json files are
+  merged in plan order (what the runs one after another would have left: sessions, timings);
+- a process keeps the sandbox's verdicts of repeated programs (sartco.program.pool: the probes
+  of a board are the same programs for every answer to it);
+- the tables of `clem eval` from one pass over the score files (sartco.clem.tooling.evaluate).
+
+The terminal gets one line per task (wall and CPU seconds) and the totals; clemcore's logs and
+progress bars go to RESULTS/main.log. Refuses (exit 2) a results folder that already holds one of
+the plan's game/model folders (the runs would mix): use a new folder or remove it. Exit 1 when a
+task fails (its message and the log's path); else `sartco report`'s status (3: harness errors or
+missing episodes, named in SCORES/harness.md and completeness.md).
+"""
+from __future__ import annotations
+
+import argparse
+import contextlib
+import json
+import multiprocessing
+import os
+import queue
+import re
+import resource
+import shutil
+import sys
+import time
+import traceback
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from sartco.errors import UserError
+
+STAGE = ".suite"
+LOG = "main.log"
+PAPER_SETTINGS = (0.0, 250)   # the paper protocol's -t and -l
+CLEM_SETTINGS = (0.0, 300)    # clem run's defaults
+
+
+@dataclass(frozen=True)
+class Task:
+    """One step: `kind` prepare (a command's argv) or play (a game/model pair), and the steps it waits for."""
+    name: str
+    kind: str
+    argv: tuple = ()
+    game: str = ""
+    model: str = ""
+    settings: tuple = CLEM_SETTINGS
+    after: tuple = ()
+    index: int = 0          # a play's place in the plan (its stage folder)
+
+
+@dataclass
+class Done:
+    name: str
+    ok: bool
+    wall: float
+    cpu: float
+    message: str = ""
+    notes: list = field(default_factory=list)
+
+
+def plan(models: list[str], erring: list[str], fresh_seed: int, data: str) -> list[Task]:
+    """make main's steps (scripts/main.sh's order: the plays in the order clem eval adds them)."""
+    tasks = [Task("import", "prepare", ("sartco", "import", f"{data}/published", "--out", "instances/published", "--quiet")),
+             Task("published instances", "prepare", ("instancegen", "--published", "instances/published"), after=("import",)),
+             Task("paper instances", "prepare", ("instancegen", "--protocol", "paper"), after=("import",)),
+             Task("fresh instances", "prepare", ("instancegen", "--fresh", str(fresh_seed)), after=("import",))]
+    needs = {"cobot_instruct_published": ("published instances",), "cobot_instruct_paper": ("paper instances",),
+             "cobot_instruct_fresh": ("fresh instances",)}
+    pairs: list[tuple[str, str, tuple]] = []
+    for model in models:
+        pairs += [(g, model, CLEM_SETTINGS) for g in ("cobot_instruct", "cobot_instruct_published", "cobot_describe",
+                                                      "cobot_describe_dialogue")]
+    pairs += [("cobot_instruct_fresh", model, CLEM_SETTINGS) for model in models]
+    if models:
+        first = models[0]
+        pairs += [("cobot_instruct_paper", first, PAPER_SETTINGS), ("cobot_instruct_ablations", first, CLEM_SETTINGS),
+                  ("cobot_instruct_feedback", first, CLEM_SETTINGS)]
+    for model in erring:
+        pairs += [("cobot_instruct_feedback", model, CLEM_SETTINGS), ("cobot_describe_dialogue", model, CLEM_SETTINGS)]
+    tasks += [Task(f"{game} ({model})", "play", game=game, model=model, settings=s, after=needs.get(game, ()), index=n)
+              for n, (game, model, s) in enumerate(pairs)]
+    return tasks
+
+
+def only(tasks: list[Task], games: list[str] | None) -> list[Task]:
+    """The plays of `games` (None: all) and the preparations they wait for."""
+    if games is None:
+        return tasks
+    unknown = sorted(set(games) - {t.game for t in tasks if t.kind == "play"})
+    if unknown:
+        raise UserError(f"-g {' '.join(unknown)}: not in the plan (its games: "
+                        f"{', '.join(dict.fromkeys(t.game for t in tasks if t.kind == 'play'))})")
+    keep = {t.name for t in tasks if t.kind == "play" and t.game in games}
+    for t in reversed(tasks):
+        if t.name in keep:
+            keep.update(t.after)
+    return [t for t in tasks if t.name in keep]
+
+
+# ---- in a worker process -------------------------------------------------------------------------
+
+def _worker_start(log: str) -> None:
+    """A worker's output (clemcore's logs, progress bars) goes to the log file."""
+    fd = os.open(log, os.O_WRONLY | os.O_APPEND | os.O_CREAT, 0o644)
+    sys.stdout.flush()
+    sys.stderr.flush()
+    os.dup2(fd, 1)
+    os.dup2(fd, 2)
+    os.close(fd)
+
+
+def _cpu() -> float:
+    own, kids = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
+    return own.ru_utime + own.ru_stime + kids.ru_utime + kids.ru_stime
+
+
+def _prepare(argv: tuple) -> int:
+    if argv[0] == "sartco":
+        from sartco import cli
+        return cli.main(list(argv[1:]))
+    from sartco.instancegen.command import script_main
+    return script_main("cobot_instruct", Path("games/cobot_instruct").resolve(), list(argv[1:]))
+
+
+def _play(task: Task, results: Path) -> int:
+    """clem run, clem score and clem transcribe of one pair, in its stage folder; then into place."""
+    from clemcore import cli as clem_cli
+    from clemcore.backends import ModelSpec
+    from clemcore.clemgame import GameBenchmark, GameRegistry
+    from clemcore.clemgame.transcripts.builder import build_transcripts
+
+    from sartco.clem.core.benchmark import run_selector
+
+    stage = results / STAGE / str(task.index)
+    temperature, max_tokens = task.settings
+    try:
+        clem_cli.run(run_selector(task.game, stage), ModelSpec.from_strings([task.model]),
+                     gen_args=dict(temperature=temperature, max_tokens=max_tokens), results_dir_path=stage)
+    except SystemExit as exc:  # clemcore exits 1 after logging a game's exception; a bad instance file: 2
+        if exc.code:
+            return int(exc.code) if isinstance(exc.code, int) else 1
+    [run_dir] = [d for d in stage.iterdir() if d.is_dir()]
+    game_dir = run_dir / task.game
+    files = sorted(game_dir.rglob("interactions.json"))
+    spec = next(s for s in GameRegistry.from_directories_and_cwd_files().get_game_specs_that_unify_with(task.game)
+                if s.game_name == task.game)
+    with GameBenchmark.load_from_spec(spec) as bench:
+        bench.compute_scores(files)
+    build_transcripts(str(game_dir))
+    target = results / run_dir.name / task.game
+    target.parent.mkdir(parents=True, exist_ok=True)
+    os.rename(game_dir, target)
+    return 0
+
+
+def _run(task: Task, results: str) -> Done:
+    from sartco.clem.core.sandbox import restart
+
+    start, cpu = time.monotonic(), _cpu()
+    print(f"== suite: {task.name}", flush=True)
+    try:
+        status = _prepare(task.argv) if task.kind == "prepare" else _play(task, Path(results))
+        message = "" if status == 0 else f"exit status {status}"
+    except BaseException as exc:  # noqa: BLE001 - the parent reports it and stops
+        traceback.print_exc()
+        status, message = 1, f"{type(exc).__name__}: {exc}"
+    finally:
+        restart()  # the sandbox's templates end, so that their CPU time counts here
+        sys.stdout.flush()
+        sys.stderr.flush()
+    return Done(task.name, status == 0, time.monotonic() - start, _cpu() - cpu, message)
+
+
+# ---- in the parent -------------------------------------------------------------------------------
+
+# the order in which ready plays start (the longest first), by game; the plan's order is clem eval's
+PRIORITY = ("cobot_instruct_published", "cobot_instruct_fresh", "cobot_instruct", "cobot_instruct_paper",
+            "cobot_describe_dialogue", "cobot_describe", "cobot_instruct_feedback", "cobot_instruct_ablations")
+
+
+def _serve(inbox, outbox, results: str, log: str) -> None:
+    """A worker process: tasks from its inbox until None, each Done to the outbox."""
+    _worker_start(log)
+    while (task := inbox.get()) is not None:
+        outbox.put(_run(task, results))
+
+
+def _pick(ready: list[Task], last: str | None, busy: set[str]) -> Task:
+    """The task a free worker takes: the next of the game it played last (its process keeps that
+    game's probe draws, sartco.clem.core.probes), else one of a game no other worker is playing,
+    else the first."""
+    return (next((t for t in ready if t.game and t.game == last), None)
+            or next((t for t in ready if t.game not in busy), None) or ready[0])
+
+
+def schedule(tasks: list[Task], workers: int, results: Path, say) -> list[Done]:
+    """Run the tasks on `workers` processes (forked now: clemcore imported once), each as soon as
+    the ones it waits for are done: the preparations first, then the plays by PRIORITY, a worker
+    keeping to one game while it has episodes to play; stop starting new ones after a failure."""
+    context = multiprocessing.get_context("fork")
+    outbox = context.Queue()
+    order = {game: n for n, game in enumerate(PRIORITY)}
+    pending = sorted(tasks, key=lambda t: (t.kind != "prepare", order.get(t.game, len(order)), t.index))
+    inboxes = [context.Queue() for _ in range(workers)]
+    procs = [context.Process(target=_serve, args=(inbox, outbox, str(results), str(results / LOG)), daemon=True)
+             for inbox in inboxes]
+    for proc in procs:
+        proc.start()
+    done: dict[str, Done] = {}
+    last: list[str | None] = [None] * workers
+    running: dict[int, Task] = {}
+    try:
+        while pending or running:
+            failed = any(not d.ok for d in done.values())
+            for w in range(workers):
+                ready = [t for t in pending if all(a in done and done[a].ok for a in t.after)]
+                if w in running or failed or not ready:
+                    continue
+                task = _pick(ready, last[w], {t.game for t in running.values()})
+                pending.remove(task)
+                running[w], last[w] = task, task.game or last[w]
+                inboxes[w].put(task)
+            if failed and not running:
+                break
+            try:
+                finished = outbox.get(timeout=5)
+            except queue.Empty:
+                dead = [w for w in running if not procs[w].is_alive()]
+                if not dead:
+                    continue
+                task = running[dead[0]]
+                finished = Done(task.name, False, 0.0, 0.0, f"its worker process died (exit {procs[dead[0]].exitcode})")
+            done[finished.name] = finished
+            del running[next(w for w, t in running.items() if t.name == finished.name)]
+            say(finished)
+    finally:
+        for inbox in inboxes:
+            inbox.put(None)
+        for proc in procs:
+            proc.join(timeout=30)
+            if proc.is_alive():
+                proc.kill()
+    return [done[t.name] for t in tasks if t.name in done]
+
+
+def merge_run_files(results: Path, tasks: list[Task]) -> None:
+    """clemcore's results/<model>/run.json as the runs one after another would leave it: the first
+    run's file, with every game's entry in plan order."""
+    merged: dict[str, dict] = {}
+    for task in tasks:
+        if task.kind != "play":
+            continue
+        for path in sorted((results / STAGE / str(task.index)).glob("*/run.json")):
+            data = json.loads(path.read_text())
+            if path.parent.name in merged:
+                merged[path.parent.name]["games"].update(data.get("games", {}))
+            else:
+                merged[path.parent.name] = data
+    for model, data in merged.items():
+        (results / model).mkdir(parents=True, exist_ok=True)
+        with open(results / model / "run.json", "w") as f:
+            json.dump(data, f, indent=2)  # clemcore's store_json
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("-r", "--results", type=Path, default=Path("results"), help="the results folder (results)")
+    parser.add_argument("--out", type=Path, default=Path("scores"), help="the tables' folder (scores)")
+    parser.add_argument("-m", "--models", nargs="+", default=["mock", "rulebased"],
+                        help="the models of every game (mock rulebased); the first also plays the paper protocol, "
+                             "the ablations and the feedback experiment")
+    parser.add_argument("--erring", nargs="*", default=["erring"],
+                        help="the models of the repair and dialogue tables only (erring); none: --erring")
+    parser.add_argument("--fresh-seed", type=int, default=7, help="the fresh boards' seed (7)")
+    parser.add_argument("-g", "--games", nargs="+", default=None,
+                        help="only these games of the plan (and the instance files they need); default: all")
+    parser.add_argument("-j", "--workers", type=int, default=os.cpu_count() or 1, help="processes (the CPUs)")
+
+
+def run(args: argparse.Namespace) -> int:
+    from sartco import settings
+
+    import clemcore.cli  # noqa: F401 - once, before the workers fork
+
+    from sartco.clem.tooling.evaluate import evaluate
+
+    data = settings.DATA
+    if not (data / "published").is_dir():
+        raise UserError(f"{data}/published: no such folder (set SARTCO_DATA to the SARTCo data folder)")
+    if not Path("games/cobot_instruct").is_dir():
+        raise UserError("run it in the checkout's root folder (games/cobot_instruct not found here)")
+    tasks = only(plan(args.models, args.erring, args.fresh_seed, str(data)), args.games)
+    plays = [t for t in tasks if t.kind == "play"]
+    results: Path = args.results
+    clash = [results / t.model / t.game for t in plays if (results / t.model / t.game).exists()]
+    if clash:
+        raise UserError(f"{clash[0]} exists: the suite plays into a results folder without the plan's runs "
+                        f"(give another -r, or remove it: make clean-results)")
+    shutil.rmtree(results / STAGE, ignore_errors=True)
+    results.mkdir(parents=True, exist_ok=True)
+    (results / LOG).write_text("")
+    start, cpu = time.monotonic(), _cpu()
+
+    def say(d: Done) -> None:
+        print(f"== {d.name}: {'done' if d.ok else 'FAILED'} in {d.wall:.1f} s ({d.cpu:.1f} s CPU)"
+              + (f": {d.message}" if d.message else ""), flush=True)
+        if d.name == "fresh instances":  # how many, and the overlap with the published and seed-42 boards
+            lines = re.findall(r"fresh boards \(seed[^\r\n]*", (results / LOG).read_text(errors="replace"))
+            print(lines[-1] if lines else "fresh boards: the generator's line is not in the log", flush=True)
+
+    finished = schedule(tasks, max(1, args.workers), results, say)
+    failed = [d for d in finished if not d.ok] or ([] if len(finished) == len(tasks) else [Done("?", False, 0, 0)])
+    if failed:
+        print(f"sartco suite: {failed[0].name} failed: {failed[0].message} (full log: {results / LOG})", file=sys.stderr)
+        return 1
+    merge_run_files(results, tasks)
+    shutil.rmtree(results / STAGE)
+    from sartco import cli
+
+    t0, c0 = time.monotonic(), _cpu()
+    with open(results / LOG, "a") as log, contextlib.redirect_stdout(log), contextlib.redirect_stderr(log):
+        evaluate(results, [(t.game, t.model) for t in plays])
+    print(f"== clem eval's tables (raw.csv, results.csv, results.html): done in {time.monotonic() - t0:.1f} s "
+          f"({_cpu() - c0:.1f} s CPU)", flush=True)
+    t0, c0 = time.monotonic(), _cpu()
+    with open(results / LOG, "a") as log, contextlib.redirect_stdout(log), contextlib.redirect_stderr(log):
+        status = cli.main(["report", "-r", str(results), "--out", str(args.out)])
+    print(f"== sartco report: exit {status} in {time.monotonic() - t0:.1f} s ({_cpu() - c0:.1f} s CPU)", flush=True)
+    print(f"== suite: {len(tasks)} tasks in {time.monotonic() - start:.1f} s wall, {_cpu() - cpu:.1f} s CPU "
+          f"on {args.workers} processes", flush=True)
+    return status

@@ -1,0 +1,90 @@
+"""`sartco suite` (make main's driver) writes what `clem run`, `clem score`, `clem transcribe` and
+`clem eval` write for the same game and model, and keeps main.sh's plan."""
+from __future__ import annotations
+
+import importlib.util
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from sartco import suite
+
+REPO = Path(__file__).resolve().parents[2]
+BIN = Path(sys.executable).parent
+
+
+def _compare():
+    spec = importlib.util.spec_from_file_location("compare_results", REPO / "scripts" / "compare_results.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_the_plan_is_make_mains_order_of_runs():
+    """The plays in the order clem eval added them to raw.csv (scripts/main.sh before the suite)."""
+    tasks = suite.plan(["mock", "rulebased"], ["erring"], 7, "DATA")
+    plays = [(t.game, t.model, t.settings) for t in tasks if t.kind == "play"]
+    clem, paper = (0.0, 300), (0.0, 250)
+    expected = [(g, m, clem) for m in ("mock", "rulebased") for g in
+                ("cobot_instruct", "cobot_instruct_published", "cobot_describe", "cobot_describe_dialogue")]
+    expected += [("cobot_instruct_fresh", "mock", clem), ("cobot_instruct_fresh", "rulebased", clem),
+                 ("cobot_instruct_paper", "mock", paper), ("cobot_instruct_ablations", "mock", clem),
+                 ("cobot_instruct_feedback", "mock", clem), ("cobot_instruct_feedback", "erring", clem),
+                 ("cobot_describe_dialogue", "erring", clem)]
+    assert plays == expected
+    waits = {t.game: t.after for t in tasks if t.kind == "play"}
+    assert waits["cobot_instruct_published"] == ("published instances",)
+    assert waits["cobot_instruct_paper"] == ("paper instances",)
+    assert waits["cobot_instruct"] == ()
+
+
+def test_only_keeps_the_games_asked_for_and_what_they_wait_for():
+    tasks = suite.only(suite.plan(["mock"], [], 7, "DATA"), ["cobot_instruct_published"])
+    assert [t.name for t in tasks] == ["import", "published instances", "cobot_instruct_published (mock)"]
+    with pytest.raises(Exception, match="cobot_nothing: not in the plan"):
+        suite.only(suite.plan(["mock"], [], 7, "DATA"), ["cobot_nothing"])
+
+
+def test_the_next_task_of_a_worker_is_of_the_game_it_played():
+    a, b, c = (suite.Task(f"t{n}", "play", game=g, index=n) for n, g in enumerate(["g1", "g2", "g1"]))
+    assert suite._pick([a, b, c], "g2", set()) is b
+    assert suite._pick([a, b, c], None, {"g1"}) is b
+    assert suite._pick([a, c], "g3", {"g1"}) is a
+
+
+def _run(args, cwd=REPO):
+    env = {**os.environ, "PATH": f"{BIN}{os.pathsep}{os.environ['PATH']}"}
+    return subprocess.run(args, cwd=cwd, env=env, capture_output=True, text=True, timeout=900)
+
+
+@pytest.mark.slow
+def test_the_suite_writes_what_the_clem_commands_write(tmp_path):
+    ours, theirs = tmp_path / "ours", tmp_path / "theirs"
+    done = _run(["sartco", "suite", "-r", str(ours), "--out", str(tmp_path / "tables"), "-m", "rulebased",
+                 "--erring", "-g", "cobot_describe", "-j", "2"])
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert "== cobot_describe (rulebased): done in" in done.stdout
+    for command in (["clem", "run", "-g", "cobot_describe", "-m", "rulebased", "-r", str(theirs)],
+                    ["clem", "score", "-r", str(theirs)], ["clem", "transcribe", "-r", str(theirs)],
+                    ["clem", "eval", "-r", str(theirs), "-g", "cobot_describe", "-m", "rulebased"]):
+        step = _run(command)
+        assert step.returncode == 0, step.stdout + step.stderr
+    compare = _compare()
+    everything = {**compare.files(theirs)}
+    assert set(compare.files(ours)) - {"main.log"} == set(everything) - {"clembench.log"}
+    roots = [ours.resolve(), theirs.resolve(), tmp_path.resolve()]
+    differ = {name: why for name, path in everything.items() if name in compare.files(ours)
+              for why in [compare.compare(name, compare.files(ours)[name], path, roots,
+                                          Path(name).name in ("scores.json", "raw.csv", "results.csv", "interactions.json"))]
+              if why is not None}
+    assert not differ, differ
+
+
+def test_a_results_folder_that_holds_a_run_of_the_plan_is_refused(tmp_path):
+    (tmp_path / "rulebased" / "cobot_describe").mkdir(parents=True)
+    done = _run(["sartco", "suite", "-r", str(tmp_path), "-m", "rulebased", "--erring", "-g", "cobot_describe"])
+    assert done.returncode == 2
+    assert "cobot_describe exists" in done.stderr and "make clean-results" in done.stderr
