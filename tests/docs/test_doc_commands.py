@@ -198,3 +198,10 @@ def test_relative_links_reach_their_file_and_heading():
                 if fragment not in headings:
                     broken.append(f"{doc.relative_to(REPO)}: {target} (no such heading)")
     assert not broken, "links that lead nowhere:\n" + "\n".join(broken)
+
+
+def test_the_readme_stays_short():
+    """A newcomer reads it to the end (issue 35): what the project is, the two commands, a first
+    run, the layout and a map of the docs; the rest has its page in docs/."""
+    lines = len((REPO / "README.md").read_text(encoding="utf-8").splitlines())
+    assert lines <= 250, f"README.md has {lines} lines: move a concern's text into its page of docs/"
