@@ -1,6 +1,6 @@
 """95 % percentile bootstrap intervals over episodes, for every rate of `sartco report`.
 
-Method (README, "How sure is a number"): a cell's n episodes are resampled with replacement
+Method (docs/scores.md, "How sure is a number"): a cell's n episodes are resampled with replacement
 RESAMPLES = 10,000 times; the interval is the 2.5th and 97.5th percentile of the resampled
 means. The generator is numpy's default_rng(SEED), seeded afresh for every cell, so a cell's
 interval does not depend on which other cells a report holds. A missing value (an aborted

@@ -203,3 +203,21 @@ def test_named_test_files_exist():
     stale = [f"{path.relative_to(ROOT)}: {name}" for path in texts
              for name in sorted(set(named.findall(path.read_text(encoding="utf-8")))) if not (ROOT / name).is_file()]
     assert not stale, "test files named but missing:\n" + "\n".join(stale)
+
+
+def documented_layers() -> list[tuple[str, list[str]]]:
+    """(layer, packages) of the table in docs/ARCHITECTURE.md's "Layers", in its order: the second
+    column's names in backticks (`games/*` and `tools/*` as the folders)."""
+    text = (ROOT / "docs" / "ARCHITECTURE.md").read_text(encoding="utf-8")
+    section = text[text.index("\n## Layers"):]
+    section = section[:section.index("\n## ", 1)]
+    rows = [row.split("|")[1:3] for row in section.splitlines() if row.startswith("| ") and "`" in row.split("|")[2]]
+    return [(layer.strip(), [name.removesuffix("/*") for name in re.findall(r"`([^`]+)`", packages)])
+            for layer, packages in rows]
+
+
+def test_the_documented_layers_are_the_checked_ones():
+    """docs/ARCHITECTURE.md's table names the layers this test enforces, in the same order, each with
+    the same packages (sartco.__main__, `python -m sartco`, goes unnamed beside sartco.cli)."""
+    checked = [(layer, [p for p in packages if p != "sartco.__main__"]) for layer, packages in LAYERS]
+    assert documented_layers() == checked

@@ -1,5 +1,5 @@
-"""The README's game_registry.json examples (section "Running from a clembench checkout"), read out
-of README.md so the test follows the README: each, with the README's placeholder path made this
+"""The game_registry.json examples of docs/models.md (section "Running from a clembench checkout"),
+read out of the page so the test follows it: each, with the page's placeholder path made this
 checkout's, lets `clem list games` list our games in a folder of its own."""
 import json
 import os
@@ -12,15 +12,16 @@ import pytest
 
 REPO = Path(__file__).resolve().parents[2]
 CLEM = str(Path(sys.executable).parent / "clem")
-SECTION = "### Running from a clembench checkout"
+PAGE = REPO / "docs" / "models.md"
+SECTION = "## Running from a clembench checkout"
 PLACEHOLDER = "/path/to/sartco-bench"
 
 
 def registry_examples() -> list[list[dict]]:
-    """The JSON blocks of the README's section, in order."""
-    text = (REPO / "README.md").read_text(encoding="utf-8")
+    """The JSON blocks of the page's section, in order."""
+    text = PAGE.read_text(encoding="utf-8")
     section = text[text.index(SECTION):]
-    section = section[:section.index("\n### ", len(SECTION))]
+    section = section[:section.index("\n## ", len(SECTION))]
     return [json.loads(block) for block in re.findall(r"```json\n(.*?)```", section, re.S)]
 
 
@@ -33,7 +34,7 @@ def test_the_section_has_both_kinds_of_entry():
 
 
 @pytest.mark.parametrize("entries", EXAMPLES, ids=["benchmark_path", "game_path"])
-def test_clem_list_games_with_the_readme_registry(tmp_path, entries):
+def test_clem_list_games_with_the_documented_registry(tmp_path, entries):
     text = json.dumps(entries).replace(PLACEHOLDER, str(REPO))
     (tmp_path / "game_registry.json").write_text(text)
     env = {k: v for k, v in os.environ.items() if k != "CLEMBENCH_HOME"}

@@ -104,5 +104,5 @@ def test_transcript_of_a_copied_results_folder_in_a_browser(tmp_path):
     for line, x in indented:  # four spaces of monospace further right than the unindented lines
         assert x > min(flush) + 15, (line, x, min(flush))
     assert shot.stat().st_size > 10_000
-    if os.environ.get("SARTCO_SCREENSHOT"):  # refresh the README's picture: SARTCO_SCREENSHOT=1 pytest ...
+    if os.environ.get("SARTCO_SCREENSHOT"):  # refresh docs/games.md's picture: SARTCO_SCREENSHOT=1 pytest ...
         shutil.copyfile(shot, SCREENSHOT)

@@ -5,7 +5,7 @@ same board here.
 The corpus is tests/program/corpus (one program a file, of the kinds models write for the task);
 tools/honest_corpus.py runs each program under plain exec (the oracle) and in the sandbox and
 compares outcome and cells. A program listed in corpus/known_disagreements.json (name -> reason,
-also listed in README.md) must still disagree, so that the list stays honest; every other program
+also listed in docs/sandbox.md) must still disagree, so that the list stays honest; every other program
 must agree; the agreement over the whole corpus must be at least 0.97.
 """
 import importlib.util
@@ -36,12 +36,12 @@ def test_corpus_is_big_distinct_and_agrees(results):
     assert agree / len(results) >= 0.97, honest_corpus.report(list(results.values()), KNOWN)
 
 
-def test_every_listed_disagreement_is_a_program_with_a_reason_in_the_readme():
-    readme = (REPO / "README.md").read_text(encoding="utf-8")
+def test_every_listed_disagreement_is_a_program_with_a_reason_in_the_docs():
+    page = (REPO / "docs" / "sandbox.md").read_text(encoding="utf-8")
     for name, reason in KNOWN.items():
         assert name in NAMES, f"{name} is listed in known_disagreements.json but is not in the corpus"
         assert reason.strip() and "\n" not in reason, f"{name}: the reason must be one line"
-        assert f"`{name}`" in readme, f"{name} is a known disagreement but README.md does not list it"
+        assert f"`{name}`" in page, f"{name} is a known disagreement but docs/sandbox.md does not list it"
 
 
 @pytest.mark.parametrize("name", NAMES)
@@ -50,7 +50,7 @@ def test_honest_program_builds_what_plain_exec_builds(results, name):
     assert r.honest, f"not an honest program: {r.plain}"
     assert r.pieces, "every program of the corpus places something under plain exec"
     if name in KNOWN:
-        assert not r.agrees, f"{name} agrees now: remove it from known_disagreements.json and README.md"
+        assert not r.agrees, f"{name} agrees now: remove it from known_disagreements.json and docs/sandbox.md"
     else:
         assert r.agrees, r.detail
 
