@@ -38,47 +38,24 @@ from __future__ import annotations
 import argparse
 import contextlib
 import json
-import multiprocessing
 import os
-import queue
 import re
-import resource
 import shutil
 import sys
 import time
 import traceback
-from dataclasses import dataclass, field
 from pathlib import Path
 
 from sartco.errors import UserError
+from sartco.schedule import CLEM_SETTINGS, LOG, Done, Task, cpu_seconds, schedule
 
 STAGE = ".suite"
-LOG = "main.log"
 PAPER_SETTINGS = (0.0, 250)   # the paper protocol's -t and -l
-CLEM_SETTINGS = (0.0, 300)    # clem run's defaults
+# the order in which ready plays start (the longest first), by game; the plan's order is clem eval's
+PRIORITY = ("cobot_instruct_published", "cobot_instruct_fresh", "cobot_instruct", "cobot_instruct_paper",
+            "cobot_describe_dialogue", "cobot_describe", "cobot_instruct_feedback", "cobot_instruct_ablations")
 
 
-@dataclass(frozen=True)
-class Task:
-    """One step: `kind` prepare (a command's argv) or play (a game/model pair), and the steps it waits for."""
-    name: str
-    kind: str
-    argv: tuple = ()
-    game: str = ""
-    model: str = ""
-    settings: tuple = CLEM_SETTINGS
-    after: tuple = ()
-    index: int = 0          # a play's place in the plan (its stage folder)
-
-
-@dataclass
-class Done:
-    name: str
-    ok: bool
-    wall: float
-    cpu: float
-    message: str = ""
-    notes: list = field(default_factory=list)
 
 
 def plan(models: list[str], erring: list[str], fresh_seed: int, data: str) -> list[Task]:
@@ -122,21 +99,6 @@ def only(tasks: list[Task], games: list[str] | None) -> list[Task]:
 
 # ---- in a worker process -------------------------------------------------------------------------
 
-def _worker_start(log: str) -> None:
-    """A worker's output (clemcore's logs, progress bars) goes to the log file."""
-    fd = os.open(log, os.O_WRONLY | os.O_APPEND | os.O_CREAT, 0o644)
-    sys.stdout.flush()
-    sys.stderr.flush()
-    os.dup2(fd, 1)
-    os.dup2(fd, 2)
-    os.close(fd)
-
-
-def _cpu() -> float:
-    own, kids = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
-    return own.ru_utime + own.ru_stime + kids.ru_utime + kids.ru_stime
-
-
 def _prepare(argv: tuple) -> int:
     if argv[0] == "sartco":
         from sartco import cli
@@ -179,7 +141,7 @@ def _play(task: Task, results: Path) -> int:
 def _run(task: Task, results: str) -> Done:
     from sartco.clem.core.sandbox import restart
 
-    start, cpu = time.monotonic(), _cpu()
+    start, cpu = time.monotonic(), cpu_seconds()
     print(f"== suite: {task.name}", flush=True)
     try:
         status = _prepare(task.argv) if task.kind == "prepare" else _play(task, Path(results))
@@ -191,80 +153,10 @@ def _run(task: Task, results: str) -> Done:
         restart()  # the sandbox's templates end, so that their CPU time counts here
         sys.stdout.flush()
         sys.stderr.flush()
-    return Done(task.name, status == 0, time.monotonic() - start, _cpu() - cpu, message)
+    return Done(task.name, status == 0, time.monotonic() - start, cpu_seconds() - cpu, message)
 
 
 # ---- in the parent -------------------------------------------------------------------------------
-
-# the order in which ready plays start (the longest first), by game; the plan's order is clem eval's
-PRIORITY = ("cobot_instruct_published", "cobot_instruct_fresh", "cobot_instruct", "cobot_instruct_paper",
-            "cobot_describe_dialogue", "cobot_describe", "cobot_instruct_feedback", "cobot_instruct_ablations")
-
-
-def _serve(inbox, outbox, results: str, log: str) -> None:
-    """A worker process: tasks from its inbox until None, each Done to the outbox."""
-    _worker_start(log)
-    while (task := inbox.get()) is not None:
-        outbox.put(_run(task, results))
-
-
-def _pick(ready: list[Task], last: str | None, busy: set[str]) -> Task:
-    """The task a free worker takes: the next of the game it played last (its process keeps that
-    game's probe draws, sartco.clem.core.probes), else one of a game no other worker is playing,
-    else the first."""
-    return (next((t for t in ready if t.game and t.game == last), None)
-            or next((t for t in ready if t.game not in busy), None) or ready[0])
-
-
-def schedule(tasks: list[Task], workers: int, results: Path, say) -> list[Done]:
-    """Run the tasks on `workers` processes (forked now: clemcore imported once), each as soon as
-    the ones it waits for are done: the preparations first, then the plays by PRIORITY, a worker
-    keeping to one game while it has episodes to play; stop starting new ones after a failure."""
-    context = multiprocessing.get_context("fork")
-    outbox = context.Queue()
-    order = {game: n for n, game in enumerate(PRIORITY)}
-    pending = sorted(tasks, key=lambda t: (t.kind != "prepare", order.get(t.game, len(order)), t.index))
-    inboxes = [context.Queue() for _ in range(workers)]
-    procs = [context.Process(target=_serve, args=(inbox, outbox, str(results), str(results / LOG)), daemon=True)
-             for inbox in inboxes]
-    for proc in procs:
-        proc.start()
-    done: dict[str, Done] = {}
-    last: list[str | None] = [None] * workers
-    running: dict[int, Task] = {}
-    try:
-        while pending or running:
-            failed = any(not d.ok for d in done.values())
-            for w in range(workers):
-                ready = [t for t in pending if all(a in done and done[a].ok for a in t.after)]
-                if w in running or failed or not ready:
-                    continue
-                task = _pick(ready, last[w], {t.game for t in running.values()})
-                pending.remove(task)
-                running[w], last[w] = task, task.game or last[w]
-                inboxes[w].put(task)
-            if failed and not running:
-                break
-            try:
-                finished = outbox.get(timeout=5)
-            except queue.Empty:
-                dead = [w for w in running if not procs[w].is_alive()]
-                if not dead:
-                    continue
-                task = running[dead[0]]
-                finished = Done(task.name, False, 0.0, 0.0, f"its worker process died (exit {procs[dead[0]].exitcode})")
-            done[finished.name] = finished
-            del running[next(w for w, t in running.items() if t.name == finished.name)]
-            say(finished)
-    finally:
-        for inbox in inboxes:
-            inbox.put(None)
-        for proc in procs:
-            proc.join(timeout=30)
-            if proc.is_alive():
-                proc.kill()
-    return [done[t.name] for t in tasks if t.name in done]
-
 
 def merge_run_files(results: Path, tasks: list[Task]) -> None:
     """clemcore's results/<model>/run.json as the runs one after another would leave it: the first
@@ -321,7 +213,7 @@ def run(args: argparse.Namespace) -> int:
     shutil.rmtree(results / STAGE, ignore_errors=True)
     results.mkdir(parents=True, exist_ok=True)
     (results / LOG).write_text("")
-    start, cpu = time.monotonic(), _cpu()
+    start, cpu = time.monotonic(), cpu_seconds()
 
     def say(d: Done) -> None:
         print(f"== {d.name}: {'done' if d.ok else 'FAILED'} in {d.wall:.1f} s ({d.cpu:.1f} s CPU)"
@@ -330,7 +222,7 @@ def run(args: argparse.Namespace) -> int:
             lines = re.findall(r"fresh boards \(seed[^\r\n]*", (results / LOG).read_text(errors="replace"))
             print(lines[-1] if lines else "fresh boards: the generator's line is not in the log", flush=True)
 
-    finished = schedule(tasks, max(1, args.workers), results, say)
+    finished = schedule(_run, tasks, max(1, args.workers), results, say, PRIORITY)
     failed = [d for d in finished if not d.ok] or ([] if len(finished) == len(tasks) else [Done("?", False, 0, 0)])
     if failed:
         print(f"sartco suite: {failed[0].name} failed: {failed[0].message} (full log: {results / LOG})", file=sys.stderr)
@@ -339,15 +231,15 @@ def run(args: argparse.Namespace) -> int:
     shutil.rmtree(results / STAGE)
     from sartco import cli
 
-    t0, c0 = time.monotonic(), _cpu()
+    t0, c0 = time.monotonic(), cpu_seconds()
     with open(results / LOG, "a") as log, contextlib.redirect_stdout(log), contextlib.redirect_stderr(log):
         evaluate(results, [(t.game, t.model) for t in plays])
     print(f"== clem eval's tables (raw.csv, results.csv, results.html): done in {time.monotonic() - t0:.1f} s "
-          f"({_cpu() - c0:.1f} s CPU)", flush=True)
-    t0, c0 = time.monotonic(), _cpu()
+          f"({cpu_seconds() - c0:.1f} s CPU)", flush=True)
+    t0, c0 = time.monotonic(), cpu_seconds()
     with open(results / LOG, "a") as log, contextlib.redirect_stdout(log), contextlib.redirect_stderr(log):
         status = cli.main(["report", "-r", str(results), "--out", str(args.out)])
-    print(f"== sartco report: exit {status} in {time.monotonic() - t0:.1f} s ({_cpu() - c0:.1f} s CPU)", flush=True)
-    print(f"== suite: {len(tasks)} tasks in {time.monotonic() - start:.1f} s wall, {_cpu() - cpu:.1f} s CPU "
+    print(f"== sartco report: exit {status} in {time.monotonic() - t0:.1f} s ({cpu_seconds() - c0:.1f} s CPU)", flush=True)
+    print(f"== suite: {len(tasks)} tasks in {time.monotonic() - start:.1f} s wall, {cpu_seconds() - cpu:.1f} s CPU "
           f"on {args.workers} processes", flush=True)
     return status

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from sartco import suite
+from sartco import schedule, suite
 
 REPO = Path(__file__).resolve().parents[2]
 BIN = Path(sys.executable).parent
@@ -49,10 +49,10 @@ def test_only_keeps_the_games_asked_for_and_what_they_wait_for():
 
 
 def test_the_next_task_of_a_worker_is_of_the_game_it_played():
-    a, b, c = (suite.Task(f"t{n}", "play", game=g, index=n) for n, g in enumerate(["g1", "g2", "g1"]))
-    assert suite._pick([a, b, c], "g2", set()) is b
-    assert suite._pick([a, b, c], None, {"g1"}) is b
-    assert suite._pick([a, c], "g3", {"g1"}) is a
+    a, b, c = (schedule.Task(f"t{n}", "play", game=g, index=n) for n, g in enumerate(["g1", "g2", "g1"]))
+    assert schedule._pick([a, b, c], "g2", set()) is b
+    assert schedule._pick([a, b, c], None, {"g1"}) is b
+    assert schedule._pick([a, c], "g3", {"g1"}) is a
 
 
 def _run(args, cwd=REPO):

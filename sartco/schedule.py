@@ -1,0 +1,120 @@
+"""The scheduler of `sartco suite` (sartco/suite.py): tasks that wait for each other, on a few
+forked worker processes whose output goes to a log file; a worker keeps to one game while that
+game has episodes to play (its process keeps the probe draws of the boards it probed), and the
+CPU time of each task is measured where it ran (its sandbox processes included).
+"""
+from __future__ import annotations
+
+import multiprocessing
+import os
+import queue
+import resource
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+
+LOG = "main.log"
+CLEM_SETTINGS = (0.0, 300)    # clem run's defaults
+
+
+@dataclass(frozen=True)
+class Task:
+    """One step: `kind` prepare (a command's argv) or play (a game/model pair), and the steps it waits for."""
+    name: str
+    kind: str
+    argv: tuple = ()
+    game: str = ""
+    model: str = ""
+    settings: tuple = CLEM_SETTINGS
+    after: tuple = ()
+    index: int = 0          # a play's place in the plan (its stage folder)
+
+
+@dataclass
+class Done:
+    name: str
+    ok: bool
+    wall: float
+    cpu: float
+    message: str = ""
+
+
+def _worker_start(log: str) -> None:
+    """A worker's output (clemcore's logs, progress bars) goes to the log file."""
+    fd = os.open(log, os.O_WRONLY | os.O_APPEND | os.O_CREAT, 0o644)
+    sys.stdout.flush()
+    sys.stderr.flush()
+    os.dup2(fd, 1)
+    os.dup2(fd, 2)
+    os.close(fd)
+
+
+def cpu_seconds() -> float:
+    own, kids = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
+    return own.ru_utime + own.ru_stime + kids.ru_utime + kids.ru_stime
+
+
+def _serve(work, inbox, outbox, results: str, log: str) -> None:
+    """A worker process: tasks from its inbox until None, each work(task, results) (a Done) to the outbox."""
+    _worker_start(log)
+    while (task := inbox.get()) is not None:
+        outbox.put(work(task, results))
+
+
+def _pick(ready: list[Task], last: str | None, busy: set[str]) -> Task:
+    """The task a free worker takes: the next of the game it played last (its process keeps that
+    game's probe draws, sartco.clem.core.probes), else one of a game no other worker is playing,
+    else the first."""
+    return (next((t for t in ready if t.game and t.game == last), None)
+            or next((t for t in ready if t.game not in busy), None) or ready[0])
+
+
+def schedule(work, tasks: list[Task], workers: int, results: Path, say, priority: tuple = ()) -> list[Done]:
+    """Run work(task, results) for the tasks on `workers` processes (forked now: what the caller
+    imported is imported there), each as soon as
+    the ones it waits for are done: the preparations first, then the plays by `priority` (games), a worker
+    keeping to one game while it has episodes to play; stop starting new ones after a failure."""
+    context = multiprocessing.get_context("fork")
+    outbox = context.Queue()
+    order = {game: n for n, game in enumerate(priority)}
+    pending = sorted(tasks, key=lambda t: (t.kind != "prepare", order.get(t.game, len(order)), t.index))
+    inboxes = [context.Queue() for _ in range(workers)]
+    procs = [context.Process(target=_serve, args=(work, inbox, outbox, str(results), str(results / LOG)), daemon=True)
+             for inbox in inboxes]
+    for proc in procs:
+        proc.start()
+    done: dict[str, Done] = {}
+    last: list[str | None] = [None] * workers
+    running: dict[int, Task] = {}
+    try:
+        while pending or running:
+            failed = any(not d.ok for d in done.values())
+            for w in range(workers):
+                ready = [t for t in pending if all(a in done and done[a].ok for a in t.after)]
+                if w in running or failed or not ready:
+                    continue
+                task = _pick(ready, last[w], {t.game for t in running.values()})
+                pending.remove(task)
+                running[w], last[w] = task, task.game or last[w]
+                inboxes[w].put(task)
+            if failed and not running:
+                break
+            try:
+                finished = outbox.get(timeout=5)
+            except queue.Empty:
+                dead = [w for w in running if not procs[w].is_alive()]
+                if not dead:
+                    continue
+                task = running[dead[0]]
+                finished = Done(task.name, False, 0.0, 0.0, f"its worker process died (exit {procs[dead[0]].exitcode})")
+            done[finished.name] = finished
+            del running[next(w for w, t in running.items() if t.name == finished.name)]
+            say(finished)
+    finally:
+        for inbox in inboxes:
+            inbox.put(None)
+        for proc in procs:
+            proc.join(timeout=30)
+            if proc.is_alive():
+                proc.kill()
+    return [done[t.name] for t in tasks if t.name in done]
