@@ -83,8 +83,8 @@ class RewardServer:
 
     def __init__(self, host: str = "127.0.0.1", port: int = 0, reward: str = "es"):
         self.host, self.reward = host, reward
-        self.batcher = Batcher()
         self._httpd = _HTTPServer((host, port), self._handler())
+        self.batcher = Batcher()
 
     @property
     def url(self) -> str:

@@ -22,6 +22,11 @@ OpenRLHF: `reward_func(queries, prompts, labels)` (`--remote_rm_url` = this file
 over a dataset of `sartco export-dataset` rows read with `--input_key prompt --label_key episode
 --apply_chat_template`.
 
+Tested versions (docs/training.md): TRL 1.16.0, verl 0.9.1, verifiers 0.3.1 (0.4.0
+requires anthropic>=1.0 against clemcore's <1.0, and dropped this API), OpenRLHF 0.11.2 installed
+without its dependencies (flash-attn builds only with CUDA): its reward client runs for real, only
+vLLM's generation is stood in for.
+
 A harness_error is 0.0 wherever the trainer needs a number (verl, verifiers, OpenRLHF).
 This file is loaded by path as well (verl's custom_reward_function, OpenRLHF's .py form): its
 imports are absolute.
