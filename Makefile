@@ -38,10 +38,14 @@ test: $(STAMP)
 	$(BIN)/python -m pytest -n auto --dist loadfile --no-loadscope-reorder --durations=15
 
 ## The trainers' interfaces against the real libraries: one GRPO step of a tiny model on CPU, verl's
-## reward managers (the `train` extra: torch's CPU build, trl, verl; see the README for its size).
+## reward managers, a verifiers environment, OpenRLHF's reward client (the `train` extra: torch's CPU
+## build, trl, verl, verifiers; see the README for its size). OpenRLHF without its dependencies: it
+## requires flash-attn (built only with CUDA), deepspeed and vLLM, which its reward client never imports.
 TRAIN_STAMP := $(VENV)/.installed-train
+OPENRLHF := openrlhf==0.11.2
 $(TRAIN_STAMP): $(STAMP)
 	$(BIN)/python -m pip install -q -e ".[dev,train]"
+	$(BIN)/python -m pip install -q --no-deps $(OPENRLHF)
 	touch $(TRAIN_STAMP)
 
 test-train: $(TRAIN_STAMP)

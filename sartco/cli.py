@@ -30,6 +30,7 @@ COMMANDS = {
     "bench-reward": ("sartco.reward.bench", "rewards/s of sartco.reward over the gold and the erring players' answers"),
     "export-dataset": ("sartco.reward.dataset", "cobot_instruct episodes as a Hugging Face dataset (JSON lines, parquet)"),
     "suite": ("sartco.suite", "make main's job: many clem runs, scored, transcribed, evaluated, reported, on every core"),
+    "serve-reward": ("sartco.reward.serve", "the reward over HTTP for OpenRLHF's --remote_rm_url (POST /get_reward)"),
     "bench-run": ("sartco.clem.tooling.benchrun", "clem run against a stub model server: sequential vs the batching backend"),
     "register": ("sartco.register", "write sartco's models and backends into a folder's clemcore files (model_registry.json)"),
     "games": ("sartco.register:games", "copy the games into DIR and register them in ./game_registry.json"),

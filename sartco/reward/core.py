@@ -87,7 +87,10 @@ class Episodes(Mapping):
         for k, row in enumerate(rows):
             try:
                 if row["id"] not in self._instances:
-                    self._instances[row["id"]] = json.loads(row["episode"])
+                    episode = json.loads(row["episode"])
+                    if not (isinstance(episode, dict) and isinstance(episode.get("turns"), list)):
+                        raise ValueError("the episode JSON is no cobot_instruct instance (no 'turns')")
+                    self._instances[row["id"]] = episode
             except (KeyError, TypeError, ValueError) as exc:
                 raise ValueError(f"row {k}: not a row of sartco export-dataset (an 'id' and an 'episode' "
                                  f"JSON text expected; {type(exc).__name__}: {exc})") from None

@@ -77,7 +77,9 @@ def test_the_files_load_with_datasets_and_give_back_the_episodes(exported):
 
 def test_bad_rows_and_missing_files_are_named(tmp_path, capsys):
     with pytest.raises(ValueError, match="row 1: not a row of sartco export-dataset"):
-        Episodes.from_rows([{"id": "a", "episode": "{}"}, {"id": "b"}])
+        Episodes.from_rows([{"id": "a", "episode": '{"turns": ["put a nut"]}'}, {"id": "b"}])
+    with pytest.raises(ValueError, match=r"row 0: .* no cobot_instruct instance \(no 'turns'\)"):
+        Episodes.from_rows([{"id": "a", "episode": "{}"}])
     assert main(["export-dataset", "--out", str(tmp_path / "out")]) == 2
     assert "instances_train.json: no such instance file (write it with `sartco instances instruct-train`)" \
         in capsys.readouterr().err
