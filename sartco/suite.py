@@ -199,7 +199,7 @@ def run(args: argparse.Namespace) -> int:
     from sartco.clem.tooling.evaluate import evaluate
 
     data = settings.DATA
-    if not (data / "published").is_dir():
+    if data is None or not (data / "published").is_dir():
         raise UserError(f"{data}/published: no such folder (set SARTCO_DATA to the SARTCo data folder)")
     if not Path("games/cobot_instruct").is_dir():
         raise UserError("run it in the checkout's root folder (games/cobot_instruct not found here)")

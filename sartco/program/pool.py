@@ -36,6 +36,7 @@ from .verdict import failed
 BATCH = 32  # a call with fewer items than this uses one template
 MEMO = 50_000  # verdicts a LocalSandbox keeps for repeated programs (a few KB each)
 TRANSIENT = frozenset({ErrorCode.TIMEOUT, ErrorCode.RESOURCE_LIMIT, ErrorCode.HARNESS_ERROR})
+MemoKey = tuple[str, int, int, Limits, str, str]  # source, rows, cols, limits, semantics, mode
 
 
 def default_workers() -> int:
@@ -52,17 +53,17 @@ class LocalSandbox:
         self._templates: list[Worker] = []
         self._pid = os.getpid()
         self._lock = threading.Lock()
-        self._memo: OrderedDict[tuple, Execution] = OrderedDict()
+        self._memo: OrderedDict[MemoKey, Execution] = OrderedDict()
         self._memo_lock = threading.Lock()
 
-    def _recall(self, key: tuple) -> Execution | None:
+    def _recall(self, key: MemoKey) -> Execution | None:
         with self._memo_lock:
             ex = self._memo.get(key)
             if ex is not None:
                 self._memo.move_to_end(key)
         return None if ex is None else Execution(ex.ok, ex.error, ex.message, copy.deepcopy(ex.cells), ex.puts)
 
-    def _remember(self, key: tuple, ex: Execution) -> None:
+    def _remember(self, key: MemoKey, ex: Execution) -> None:
         if ex.error in TRANSIENT:
             return
         with self._memo_lock:
