@@ -24,8 +24,8 @@ without error, no piece lies directly on a piece of its colour, and its board di
 episode's target (so never the episode's own arguments) and from the kept ones. K (instance
 field `probes`, default DEFAULT_PROBES; 0 turns the probes off), the first kept in draw order,
 from rounds of CANDIDATES x K candidates (ROUNDS at most). Every program runs in the sandbox
-(sartco.clem.core.sandbox.run_many): one batch per round of gold candidates (mostly one), one for the
-K probes; a harness_error raises HarnessFault. A process keeps the draws of the boards it probed
+(sartco.clem.core.sandbox.run_many): the gold candidates in batches until K are kept, one batch for
+the K probes; a harness_error raises HarnessFault. A process keeps the draws of the boards it probed
 (`gold_draws`): every model's episode on a board, and every game's, compares with the same ones.
 
 sequence_function episodes are not probed: their gold function (and the prompt's examples)
@@ -130,23 +130,31 @@ def _plain_colours(cells: dict) -> bool:
 
 def draw_arguments(instance: dict, gold: str, name: str, k: int, seed: int = PROBE_SEED) -> list[tuple[dict, dict]]:
     """Up to k (arguments, gold board) pairs (module doc), the same for a seed on every run:
-    rounds of CANDIDATES x k candidates, one sandbox batch each, until k are kept (ROUNDS at most)."""
+    rounds of CANDIDATES x k candidates until k are kept (ROUNDS at most). The candidates of a
+    round run in draw order, in sandbox batches of as many as are still wanted, so none runs whose
+    board could not be kept: the first k that qualify, in draw order, as if all had run (24 %
+    fewer programs than whole rounds on two paper experiments, the same draws)."""
     from .sandbox import run_many
 
     rows, cols, n = instance["rows"], instance["cols"], len(combo_of(instance))
     rng = random.Random(f"{seed}/{instance['board_id']}/{instance['task']}")
-    kept, boards = [], [instance["target"]]
+    kept: list[tuple[dict, dict]] = []
+    boards = [instance["target"]]
     for _ in range(ROUNDS):
         candidates = [{"colors": [rng.choice(COLORS) for _ in range(n)], "x": rng.randrange(rows),
                        "y": rng.randrange(cols)} for _ in range(CANDIDATES * k)]
-        runs = run_many([probe_program(gold, name, a, given_code=instance["given_code"], rows=rows, cols=cols)
-                         for a in candidates], rows, cols)
-        for args, ex in zip(candidates, runs):
-            if ex.error == ErrorCode.HARNESS_ERROR:
-                raise HarnessFault(f"sandbox (gold probe): {ex.message}")
-            if ex.ok and _plain_colours(ex.cells) and ex.cells not in boards and len(kept) < k:
-                kept.append((args, ex.cells))
-                boards.append(ex.cells)
+        start = 0
+        while start < len(candidates) and len(kept) < k:
+            batch = candidates[start:start + k - len(kept)]
+            start += len(batch)
+            runs = run_many([probe_program(gold, name, a, given_code=instance["given_code"], rows=rows, cols=cols)
+                             for a in batch], rows, cols)
+            for args, ex in zip(batch, runs):
+                if ex.error == ErrorCode.HARNESS_ERROR:
+                    raise HarnessFault(f"sandbox (gold probe): {ex.message}")
+                if ex.ok and _plain_colours(ex.cells) and ex.cells not in boards and len(kept) < k:
+                    kept.append((args, ex.cells))
+                    boards.append(ex.cells)
         if len(kept) == k:
             break
     return kept
