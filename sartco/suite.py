@@ -52,7 +52,7 @@ from sartco.schedule import CLEM_SETTINGS, LOG, Done, Task, cpu_seconds, schedul
 STAGE = ".suite"
 PAPER_SETTINGS = (0.0, 250)   # the paper protocol's -t and -l
 # the order in which ready plays start (the longest first), by game; the plan's order is clem eval's
-PRIORITY = ("cobot_instruct_published", "cobot_instruct_fresh", "cobot_instruct", "cobot_instruct_paper",
+PRIORITY = ("cobot_instruct_paper", "cobot_instruct_fresh", "cobot_instruct_published", "cobot_instruct",
             "cobot_describe_dialogue", "cobot_describe", "cobot_instruct_feedback", "cobot_instruct_ablations")
 
 
@@ -129,9 +129,13 @@ def _play(task: Task, results: Path) -> int:
     files = sorted(game_dir.rglob("interactions.json"))
     spec = next(s for s in GameRegistry.from_directories_and_cwd_files().get_game_specs_that_unify_with(task.game)
                 if s.game_name == task.game)
+    played = cpu_seconds()
     with GameBenchmark.load_from_spec(spec) as bench:
         bench.compute_scores(files)
+    scored = cpu_seconds()
     build_transcripts(str(game_dir))
+    print(f"== suite: {task.name}: CPU s of scoring {scored - played:.1f}, of transcribing {cpu_seconds() - scored:.1f}",
+          flush=True)
     target = results / run_dir.name / task.game
     target.parent.mkdir(parents=True, exist_ok=True)
     os.rename(game_dir, target)
