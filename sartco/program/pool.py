@@ -85,7 +85,10 @@ class LocalSandbox:
             return [t.proc.pid for t in self._templates if t.proc is not None]
 
     def close(self) -> None:
-        """Kill and reap every template of this process (they restart on the next call)."""
+        """Kill and reap every template of this process (they restart on the next call) and forget
+        the verdicts kept for repeated programs (a benchmark's next run starts cold)."""
+        with self._memo_lock:
+            self._memo.clear()
         with self._lock:
             if self._pid == os.getpid():
                 for template in self._templates:
@@ -150,7 +153,8 @@ class LocalSandbox:
                     first.setdefault(p, i)
                     todo.append(i)
             items = [json.dumps(programs[i]).encode() for i in todo]
-            for i, answer in zip(todo, dispatch(self, items, rows, cols, limits, workers, semantics, mode)):
+            answers = dispatch(self, items, rows, cols, limits, workers, semantics, mode) if items else []
+            for i, answer in zip(todo, answers):
                 results[i] = answer
                 if cache and type(answer) is Execution:
                     self._remember((programs[i], rows, cols, limits, semantics, mode), answer)
