@@ -1,8 +1,9 @@
 """Every answer is recorded, whatever it contains: lone surrogates, NUL and other control
 characters, bidi overrides in a model's answer (and so in its code and the sandbox's messages)
 through the real `clem run` process (sequential, clemcore's openai_compatible; batched `-b`,
-openai_batching) against the local stub server, then `clem score` and `clem eval` (clemcore's CLI in this process). Before,
-`-b 4` died at the first such answer and a sequential run lost interactions.json and scores.json."""
+openai_batching) against the local stub server, then `clem score` and `clem eval` (clemcore's
+CLI in this process). Before, `-b 4` died at the first such answer and a sequential run lost
+interactions.json and scores.json."""
 import json
 from pathlib import Path
 
