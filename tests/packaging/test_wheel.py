@@ -88,7 +88,8 @@ def link_into(site: Path, bin_dir: Path, dists: list[metadata.Distribution]) -> 
     install` would unpack, without unpacking and compiling them again."""
     for dist in dists:
         base = Path(dist.locate_file(""))
-        for entry in dist.files or []:
+        assert dist.files, f"{dist.metadata['Name']}: installed without a RECORD of its files, cannot be linked"
+        for entry in dist.files:
             rel = Path(os.path.normpath(entry))
             source = base / rel
             if rel.parts[0] == ".." or not source.is_file():  # bin/ scripts: written below
