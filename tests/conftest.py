@@ -19,10 +19,33 @@ def by_id(episodes):
 
 # `make test` runs the tests on every core (pytest-xdist, `-n auto --dist loadfile`): each test
 # file on one worker, so a file's module-scoped fixtures (a results folder several tests read)
-# are built once. The files start in this order, longest first, so that no long one is left to
-# run alone at the end: the wheel in a fresh venv (minutes), then the files holding `slow` tests
-# (clem runs end to end, browsers), then the rest as collected.
-LONGEST = ("tests/packaging/test_wheel.py",)
+# are built once. A worker takes the next file when its own is nearly done, so the files start
+# longest first, that no long one is left to run alone at the end: LONGEST in its order (each
+# file alone, `pytest -p no:xdist --durations=0`, README "The tests on both cores"), then the
+# other files holding `slow` tests, then the rest as collected.
+LONGEST = (
+    "tests/packaging/test_wheel.py",
+    "tests/report/test_passk.py",
+    "tests/clem/test_backend_runs.py",
+    "tests/games/test_end_to_end.py",
+    "tests/clem/test_resume_settings.py",
+    "tests/published/test_importer.py",
+    "tests/follower/test_follower.py",
+    "tests/clem/test_batching.py",
+    "tests/clem/test_instance_checks.py",
+    "tests/clem/test_hostile_text.py",
+    "tests/games/test_outside_repo.py",
+    "tests/packaging/test_local_model.py",
+    "tests/protocols/test_commands.py",
+    "tests/clem/test_erring.py",
+    "tests/instances/test_fresh.py",
+    "tests/program/test_poisoning.py",
+    "tests/games/test_runs.py",
+    "tests/games/test_transcript_boards.py",
+    "tests/paper/test_paper_oracle.py",
+    "tests/instances/test_generate.py",
+    "tests/games/test_feedback.py",
+)
 
 
 def pytest_collection_modifyitems(config, items):
@@ -30,6 +53,6 @@ def pytest_collection_modifyitems(config, items):
 
     def rank(item):
         path = item.nodeid.split("::")[0]
-        return 0 if path in LONGEST else 1 if path in slow_files else 2
+        return LONGEST.index(path) if path in LONGEST else len(LONGEST) + (0 if path in slow_files else 1)
 
     items.sort(key=rank)  # stable: the collection order within each rank

@@ -8,9 +8,13 @@
 - fence(code)                                     an answer with its code in a fenced block
 - sh(*args)                                       a command that must succeed
 - clem(*args)                                     clemcore's CLI in this process, must succeed
+- sartco(*args)                                   the `sartco` command in this process: its exit
+                                                  status, stdout and stderr
 """
 from __future__ import annotations
 
+import contextlib
+import io
 import json
 import os
 import subprocess
@@ -99,6 +103,27 @@ def clem(*args, cwd=REPO) -> None:
     finally:
         sys.argv = argv
         os.chdir(here)
+
+
+def sartco(*args, cwd=REPO) -> subprocess.CompletedProcess:
+    """`sartco ...` in this process (sartco.cli.main, which `python -m sartco` and the `sartco`
+    script call), from `cwd`: its exit status and what it printed, as a finished process. For the
+    tests that check what a command does and says, not the process: most commands import clemcore
+    (about 4 s in a new process)."""
+    from sartco.cli import main
+    out, err, here = io.StringIO(), io.StringIO(), os.getcwd()
+    os.chdir(cwd)
+    try:
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+            try:
+                status = main([str(a) for a in args])
+            except SystemExit as stop:  # argparse's usage errors, a command's exit: as the process ends
+                status = stop.code if isinstance(stop.code, int) else 0 if stop.code is None else 1
+                if isinstance(stop.code, str):
+                    print(stop.code, file=err)
+    finally:
+        os.chdir(here)
+    return subprocess.CompletedProcess(["sartco", *map(str, args)], status, out.getvalue(), err.getvalue())
 
 
 def stub_scratch(folder: Path, base_url: str, experiments: list[str], episodes: int = 2, **config) -> tuple[dict, Path]:

@@ -93,12 +93,13 @@ class Importer:
 
 
 def import_published(src: Path, out: Path, gold_dir: Path | None) -> dict:
-    """Convert the published files in src into a dataset in out; returns the manifest."""
+    """Convert the published files in src into a dataset in out; returns the manifest. An --out that
+    cannot be a folder is told before the files are read (reading runs every gold program)."""
+    make_folder(out)
     importer = Importer(src, gold_dir)
     importer.run()
     files = importer.files()
     importer.defects += instruction_defects(files)
-    make_folder(out)
     for name, records in files.items():
         (out / name).write_text(dumps(records), encoding="utf-8")
     inputs = {name: hashlib.sha256((src / name).read_bytes()).hexdigest() for name in sorted(importer.read_counts)}

@@ -12,7 +12,8 @@ import time
 
 import pytest
 
-from play_helpers import stub_scratch
+from play_helpers import clem, stub_scratch
+from sartco.cli import main as sartco_main
 from sartco.clem.tooling import benchrun
 from sartco.clem.tooling.stub_server import StubServer, answer_table, conversation_key
 from sartco.report.harness_table import HARNESS_STATUS
@@ -25,9 +26,11 @@ def setup(tmp_path, server: StubServer, **config) -> tuple:
 
 
 def run(tmp_path, instances_file, results: str, batch: int) -> None:
+    """The real `clem run` process (the backend files, key.json and model registry of its folder), then
+    `clem score` in this process (clemcore's CLI: the same scores.json, without importing clemcore again)."""
     benchrun.clem(["run", "-g", benchrun.GAME, "-m", benchrun.MODEL, "-b", str(batch), "-i", str(instances_file),
                    "-r", str(tmp_path / results)], tmp_path)
-    benchrun.clem(["score", "-g", benchrun.GAME, "-r", str(tmp_path / results)], tmp_path)
+    clem("score", "-g", benchrun.GAME, "-r", tmp_path / results)
 
 
 def test_the_cache_serves_a_repeated_run_without_the_server(tmp_path):
@@ -55,14 +58,16 @@ def episodes_of(results) -> dict[str, dict]:
     return out
 
 
-def report(tmp_path, results) -> subprocess.CompletedProcess:
-    benchrun.clem(["eval", "-r", str(results)], tmp_path)   # clemcore's eval takes the recorded episodes
-    return subprocess.run([sys.executable, "-m", "sartco", "report", "-r", str(results), "--out",
-                           str(tmp_path / "scores")], cwd=tmp_path, capture_output=True, text=True, timeout=300)
+def report(tmp_path, results, capsys) -> tuple[int, str]:
+    """`clem eval` then `sartco report` (both in this process): (report's exit status, its stderr)."""
+    clem("eval", "-r", results)   # clemcore's eval takes the recorded episodes
+    capsys.readouterr()
+    status = sartco_main(["report", "-r", str(results), "--out", str(tmp_path / "scores")])
+    return status, capsys.readouterr().err
 
 
 @pytest.mark.parametrize("batch", [1, 4])
-def test_a_hung_server_gives_recorded_harness_errors_and_the_run_goes_on(tmp_path, batch):
+def test_a_hung_server_gives_recorded_harness_errors_and_the_run_goes_on(tmp_path, batch, capsys):
     with StubServer({}, hang=True, max_seconds=300) as server:
         # a second try starts while the first (3 s and its overrun: a second and more on a loaded
         # machine) took less than the 5.9 s budget, a third never (two tries take 6 s at least)
@@ -79,9 +84,9 @@ def test_a_hung_server_gives_recorded_harness_errors_and_the_run_goes_on(tmp_pat
     for s in episodes.values():   # recorded, aborted, not scored against the model (no parse_error)
         assert (s["Error Category"], s["Aborted"], s["Main Score"]) == ("harness_error", 1, None)
         assert re.fullmatch(r"model server: no answer after 2 tries in \d+ s \(timeout 3 s\)", s["Harness Error"])
-    done = report(tmp_path, tmp_path / "results")
-    assert done.returncode == HARNESS_STATUS, done.stderr[-2000:]
-    assert "4 harness error(s)" in done.stderr
+    status, stderr = report(tmp_path, tmp_path / "results", capsys)
+    assert status == HARNESS_STATUS, stderr[-2000:]
+    assert "4 harness error(s)" in stderr
     assert "| stub | cobot_instruct | 4 | 4 | model server: no answer after 2 tries" in (
         tmp_path / "scores" / "harness.md").read_text()
     if batch == 4:   # the server is back: `sartco resume` plays the unanswered episodes again
@@ -95,7 +100,7 @@ def test_a_hung_server_gives_recorded_harness_errors_and_the_run_goes_on(tmp_pat
         assert [s["Main Score"] for s in episodes_of(tmp_path / "results").values()] == [100.0] * 4
 
 
-def test_a_server_failing_some_requests_spoils_only_their_episodes(tmp_path):
+def test_a_server_failing_some_requests_spoils_only_their_episodes(tmp_path, capsys):
     games = [i for e in benchrun.select_instances(EXPERIMENTS, 2)["experiments"] for i in e["game_instances"]]
     failing = frozenset({conversation_key(games[1]["turns"][:1])})   # the second episode's first request
     with StubServer(answer_table(games), latency=0.0, failing=failing) as server:
@@ -107,8 +112,8 @@ def test_a_server_failing_some_requests_spoils_only_their_episodes(tmp_path):
     s, = spoiled.values()
     assert s["Harness Error"].startswith("model server: InternalServerError") and "after 2 tries" in s["Harness Error"]
     assert all(s["Main Score"] == 100.0 for k, s in episodes.items() if k not in spoiled)   # gold answers
-    done = report(tmp_path, tmp_path / "results")
-    assert done.returncode == HARNESS_STATUS and "1 harness error(s)" in done.stderr
+    status, stderr = report(tmp_path, tmp_path / "results", capsys)
+    assert status == HARNESS_STATUS and "1 harness error(s)" in stderr
 
 
 def test_sample_plays_every_episode_n_times_through_openai_batching(tmp_path):

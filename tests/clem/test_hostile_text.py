@@ -1,13 +1,15 @@
 """Every answer is recorded, whatever it contains: lone surrogates, NUL and other control
 characters, bidi overrides in a model's answer (and so in its code and the sandbox's messages)
-through the real `clem run` (sequential, clemcore's openai_compatible; batched `-b`,
-openai_batching) against the local stub server, then `clem score` and `clem eval`. Before,
-`-b 4` died at the first such answer and a sequential run lost interactions.json and scores.json."""
+through the real `clem run` process (sequential, clemcore's openai_compatible; batched `-b`,
+openai_batching) against the local stub server, then `clem score` and `clem eval` (clemcore's
+CLI in this process). Before, `-b 4` died at the first such answer and a sequential run lost
+interactions.json and scores.json."""
 import json
 from pathlib import Path
 
 import pytest
 
+from play_helpers import clem
 from sartco.clem.players.sourced import fenced
 from sartco.clem.tooling import benchrun
 from sartco.clem.tooling.stub_server import StubServer, answer_table, conversation_key
@@ -47,8 +49,8 @@ def test_odd_characters_lose_no_episode(tmp_path, backend, batch):
         benchrun.write_scratch(folder, server.base_url, backend, 4)
         benchrun.clem(["run", "-g", benchrun.GAME, "-m", benchrun.MODEL, "-b", str(batch), "-i",
                        str(instances_file.with_suffix("")), "-r", str(results)], folder)
-    benchrun.clem(["score", "-g", benchrun.GAME, "-r", str(results)], folder)
-    benchrun.clem(["eval", "-r", str(results)], folder)
+    clem("score", "-g", benchrun.GAME, "-r", results)   # the same commands in this process
+    clem("eval", "-r", results)
 
     for path in results.rglob("*.json"):
         strict_json(path)  # every file clemcore and we wrote is strict UTF-8 JSON

@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-from play_helpers import REPO, sh, stub_scratch
+from play_helpers import REPO, clem, sartco, sh, stub_scratch
 from sartco.clem.tooling import benchrun
 from sartco.clem.tooling.stub_server import StubServer, answer_table, conversation_key
 
@@ -26,15 +26,18 @@ SETTINGS = ["-l", "250", "-t", "0.0", "-b", "2"]
 EXPERIMENTS_SMALL = ["rb_so_repetition_template", "sb_so_first_order_template"]   # the stub server's runs
 
 
-def sartco(*args, cwd=REPO, env=None) -> subprocess.CompletedProcess:
+def sartco_process(*args, cwd, env) -> subprocess.CompletedProcess:
+    """The `sartco` process, for a resume whose model is the stub server's (backend files, key.json
+    and model registry in `cwd`); the other commands run in this process (play_helpers.sartco)."""
     return subprocess.run([str(BIN / "sartco"), *map(str, args)], cwd=cwd, capture_output=True, text=True,
                           timeout=600, env=env)
 
 
 def played(results: Path, *extra: str) -> Path:
+    """The `clem run` process (it writes run.json), then `clem score` in this process."""
     sh(str(BIN / "clem"), "run", "-g", GAME, "-m", "mock", "-i", "instances_smoke", "-e", EXPERIMENT, *extra,
        "-r", str(results))
-    sh(str(BIN / "clem"), "score", "-r", str(results))
+    clem("score", "-r", results)
     return results / "mock" / GAME
 
 
@@ -144,7 +147,7 @@ def test_one_resume_plays_the_unscored_harness_errors_again(tmp_path):
         file = stub_setup(tmp_path / "clean", server)
         benchrun.clem(["run", "-g", GAME, "-m", benchrun.MODEL, "-l", "512", "-b", "4", "-i", str(file), "-r", "results"],
                       tmp_path / "clean")
-        benchrun.clem(["score", "-g", GAME, "-r", "results"], tmp_path / "clean")
+        clem("score", "-g", GAME, "-r", tmp_path / "clean" / "results")
     failing = frozenset({conversation_key(games[1]["turns"][:1])})
     with StubServer(answer_table(games), latency=0.0, failing=failing) as server:
         file = stub_setup(tmp_path / "run", server, retries=1, backoff=0.01)
@@ -153,7 +156,8 @@ def test_one_resume_plays_the_unscored_harness_errors_again(tmp_path):
                       tmp_path / "run")   # not scored
     with StubServer(answer_table(games), latency=0.0) as server:
         benchrun.write_scratch(tmp_path / "run", server.base_url, "openai_batching", 4)
-        done = sartco("resume", "-r", "results", "-g", GAME, "-m", benchrun.MODEL, cwd=tmp_path / "run", env=env)
+        done = sartco_process("resume", "-r", "results", "-g", GAME, "-m", benchrun.MODEL, cwd=tmp_path / "run",
+                              env=env)
         assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
         assert server.requests == len(games[1]["turns"])   # the failed episode alone is asked again
     assert "4 episodes in instances_small.json (all experiments), 1 to play, 4 to score" in done.stdout

@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 
 from feedback_cases import GOLD, HOSTILE, NO_CODE, PARTIAL, TARGET, WRONG, WRONG_CATEGORY, assert_no_target
-from play_helpers import clem, fence, scripted_episode, sh
+from play_helpers import GAMES, clem, fence, scripted_episode, sh
 from sartco.cli import main as sartco_main
 from sartco.clem.core.building import build
 
@@ -162,22 +162,28 @@ def test_report_repair_table(play_episodes, tmp_path):
 def test_feedback_experiment_end_to_end(tmp_path):
     results, out = tmp_path / "results", tmp_path / "scores"
     experiment = "rb_co_repetition_template_feedback"
+    # the game's feedback file cut to that experiment's first 10 episodes (of 130: the flow, not the
+    # coverage, is checked here; tests/clem/test_instance_checks.py checks every committed file)
+    data = json.loads((GAMES / "cobot_instruct" / "in" / "instances_feedback.json").read_text())
+    data["experiments"] = [dict(e, game_instances=e["game_instances"][:10])
+                           for e in data["experiments"] if e["name"] == experiment]
+    (tmp_path / "instances_feedback.json").write_text(json.dumps(data))
     # the `clem` process for the run (it checks the instance file and writes run.json); the other
     # commands are the same code in this process
-    sh(str(Path(sys.executable).parent / "clem"), "run", "-g", "cobot_instruct_feedback", "-m", "mock", "-e", experiment,
-       "-r", str(results), "-l", "512")
+    sh(str(Path(sys.executable).parent / "clem"), "run", "-g", "cobot_instruct_feedback", "-m", "mock", "-i",
+       str(tmp_path / "instances_feedback"), "-e", experiment, "-r", str(results), "-l", "512")
     clem("score", "-g", "cobot_instruct_feedback", "-r", str(results))
     clem("transcribe", "-g", "cobot_instruct_feedback", "-r", str(results))
     clem("eval", "-r", str(results))
     assert sartco_main(["report", "-r", str(results), "--out", str(out)]) == 0
     files = sorted(results.rglob("scores.json"))
-    assert len(files) == 130
-    for path in files[:10]:
+    assert len(files) == 10
+    for path in files:
         s = json.loads(path.read_text())["episode scores"]
         assert (s["ES@1"], s["ES@N"], s["Attempts"], s["Max Attempts"], s["Main Score"]) == (1, 1, 1, 3, 100.0)
         assert "boards_1.svg" in (path.parent / "transcript.html").read_text()
     rows = list(csv.DictReader((out / "repair.csv").open()))
     assert [(r["model"], r["experiment"], r["feedback_of"], r["attempts"], r["episodes"], r["es_at_1"], r["es_at_n"],
              r["first_failures"]) for r in rows] == \
-        [("mock", experiment, "rb_co_repetition_template", "3", "130", "100.0", "100.0", "0")]
+        [("mock", experiment, "rb_co_repetition_template", "3", "10", "100.0", "100.0", "0")]
     assert not list(csv.DictReader((out / "table3.csv").open()))  # feedback experiments are not Table 3 cells

@@ -1,25 +1,20 @@
 """A run that stopped part-way is reported incomplete and `sartco resume` completes it to the
 scores of an uninterrupted run; every run leaves run.json; runs of different instance files are
 not merged (issue 22: completeness, resume, provenance). The smoke file: 10 episodes, 2 per
-experiment, played by `mock` through the clem command line."""
+experiment, played by `mock` through the clem command line (the `clem run` process: it writes
+run.json); `sartco report` and `sartco resume` in this process (play_helpers.sartco)."""
 import csv
 import json
 import shutil
-import subprocess
 import sys
 from pathlib import Path
 
 import pytest
 
-from play_helpers import REPO, clem, sh
+from play_helpers import REPO, clem, sartco, sh
 
 BIN = Path(sys.executable).parent
 GAME = "cobot_instruct"
-
-
-def sartco(*args) -> subprocess.CompletedProcess:
-    return subprocess.run([str(BIN / "sartco"), *map(str, args)], cwd=REPO, capture_output=True, text=True,
-                          timeout=600)
 
 
 def played(results: Path) -> Path:
@@ -84,15 +79,23 @@ def test_stopped_run_is_reported_incomplete_and_resume_completes_it(tmp_path, un
 def test_runs_of_different_instance_files_are_refused(tmp_path, uninterrupted):
     results = tmp_path / "results"
     shutil.copytree(uninterrupted.parent, results / "mock")  # played from instances_smoke
-    # one more experiment into the same folder, from the game's default file (130 episodes)
-    sh(str(BIN / "clem"), "run", "-g", GAME, "-m", "mock", "-e", "rb_co_repetition_template", "-r", str(results))
+    # one more experiment into the same folder from another instance file: the game's default file
+    # (instances.json) cut to that experiment's first 2 episodes, in a folder of its own (-i PATH)
+    other = tmp_path / "other" / "instances.json"
+    other.parent.mkdir()
+    default = json.loads((REPO / "games" / GAME / "in" / "instances.json").read_text())
+    default["experiments"] = [dict(e, game_instances=e["game_instances"][:2])
+                              for e in default["experiments"] if e["name"] == "rb_co_repetition_template"]
+    other.write_text(json.dumps(default))
+    sh(str(BIN / "clem"), "run", "-g", GAME, "-m", "mock", "-i", str(other.with_suffix("")), "-e",
+       "rb_co_repetition_template", "-r", str(results))
     path = results / "mock" / GAME / "run.json"
     run = json.loads(path.read_text())
     assert [s["instance_file"]["name"] for s in run["sessions"]] == ["instances_smoke", "instances"]
     report = sartco("report", "-r", results, "--out", tmp_path / "scores")
     assert report.returncode == 2
     assert "refusing to merge runs played from different instance files" in report.stderr
-    assert "games/cobot_instruct/in/instances.json" in report.stderr and "instances_smoke.json" in report.stderr
+    assert str(other) in report.stderr and "games/cobot_instruct/in/instances_smoke.json" in report.stderr
     assert len(report.stderr.strip().splitlines()) == 1
     resume = sartco("resume", "-r", results, "-g", GAME, "-m", "mock")
     assert resume.returncode == 2 and "refusing to merge" in resume.stderr

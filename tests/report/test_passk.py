@@ -10,7 +10,7 @@ from math import prod
 
 import pytest
 
-from play_helpers import GAMES, REPO, stub_scratch
+from play_helpers import GAMES, REPO, sartco, stub_scratch
 from report_helpers import write_results
 from sartco.cli import main as sartco_main
 from sartco.report.passk import pass_all_k, pass_at_k
@@ -97,8 +97,7 @@ def test_harness_error_samples_are_left_out_and_fail_the_report(tmp_path):
                               cwd=tmp_path, env=dict(os.environ, CLEMBENCH_HOME=str(benchrun.GAME_DIR.parents[1])),
                               capture_output=True, text=True, timeout=600)
         assert done.returncode == 0, done.stderr[-2000:]
-    report = subprocess.run([sys.executable, "-m", "sartco", "report", "-r", "res", "--out", "out"], cwd=tmp_path,
-                            capture_output=True, text=True, timeout=300)
+    report = sartco("report", "-r", "res", "--out", "out", cwd=tmp_path)   # in this process (play_helpers)
     assert report.returncode == HARNESS_STATUS, report.stderr[-2000:]
     assert ("pass@k: 2 harness error sample(s) left out (the harness failed, not the model); play them again: "
             "sartco resume -r res/samples/s1 -g cobot_instruct -m stub; sartco resume -r res/samples/s2 -g "
