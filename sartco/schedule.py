@@ -28,6 +28,7 @@ class Task:
     settings: tuple = CLEM_SETTINGS
     after: tuple = ()
     index: int = 0          # a play's place in the plan (its stage folder)
+    instances: str | None = None  # a play's instance file (clem run's -i), None: the game's own
 
 
 @dataclass

@@ -44,6 +44,7 @@ import shutil
 import sys
 import time
 import traceback
+from dataclasses import replace
 from pathlib import Path
 
 from sartco.errors import UserError
@@ -120,7 +121,8 @@ def _play(task: Task, results: Path) -> int:
     temperature, max_tokens = task.settings
     try:
         clem_cli.run(run_selector(task.game, stage), ModelSpec.from_strings([task.model]),
-                     gen_args=dict(temperature=temperature, max_tokens=max_tokens), results_dir_path=stage)
+                     gen_args=dict(temperature=temperature, max_tokens=max_tokens), results_dir_path=stage,
+                     instances_filename=task.instances)
     except SystemExit as exc:  # clemcore exits 1 after logging a game's exception; a bad instance file: 2
         if exc.code:
             return int(exc.code) if isinstance(exc.code, int) else 1
@@ -192,6 +194,8 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--fresh-seed", type=int, default=7, help="the fresh boards' seed (7)")
     parser.add_argument("-g", "--games", nargs="+", default=None,
                         help="only these games of the plan (and the instance files they need); default: all")
+    parser.add_argument("-i", "--instances", default=None, metavar="NAME",
+                        help="the instance file every game plays (clem run's -i, e.g. instances_smoke; with -g)")
     parser.add_argument("-j", "--workers", type=int, default=os.cpu_count() or 1, help="processes (the CPUs)")
 
 
@@ -208,6 +212,11 @@ def run(args: argparse.Namespace) -> int:
     if not Path("games/cobot_instruct").is_dir():
         raise UserError("run it in the checkout's root folder (games/cobot_instruct not found here)")
     tasks = only(plan(args.models, args.erring, args.fresh_seed, str(data)), args.games)
+    if args.instances:
+        if not args.games:
+            raise UserError("-i names one instance file for every game played: give the games with -g")
+        tasks = [replace(t, instances=args.instances, after=()) if t.kind == "play" else t for t in tasks]
+        tasks = [t for t in tasks if t.kind == "play"]
     plays = [t for t in tasks if t.kind == "play"]
     results: Path = args.results
     clash = [results / t.model / t.game for t in plays if (results / t.model / t.game).exists()]

@@ -63,24 +63,34 @@ def _run(args, cwd=REPO):
 @pytest.mark.slow
 def test_the_suite_writes_what_the_clem_commands_write(tmp_path):
     ours, theirs = tmp_path / "ours", tmp_path / "theirs"
-    done = _run(["sartco", "suite", "-r", str(ours), "--out", str(tmp_path / "tables"), "-m", "rulebased",
-                 "--erring", "-g", "cobot_describe", "-j", "2"])
+    done = _run(["sartco", "suite", "-r", str(ours), "--out", str(tmp_path / "tables"), "-m", "rulebased", "erring",
+                 "--erring", "-g", "cobot_instruct", "-i", "instances_smoke", "-j", "2"])
     assert done.returncode == 0, done.stdout + done.stderr
-    assert "== cobot_describe (rulebased): done in" in done.stdout
-    for command in (["clem", "run", "-g", "cobot_describe", "-m", "rulebased", "-r", str(theirs)],
+    assert "== cobot_instruct (erring): done in" in done.stdout
+    for command in (["clem", "run", "-g", "cobot_instruct", "-m", "rulebased", "-r", str(theirs), "-i", "instances_smoke"],
+                    ["clem", "run", "-g", "cobot_instruct", "-m", "erring", "-r", str(theirs), "-i", "instances_smoke"],
                     ["clem", "score", "-r", str(theirs)], ["clem", "transcribe", "-r", str(theirs)],
-                    ["clem", "eval", "-r", str(theirs), "-g", "cobot_describe", "-m", "rulebased"]):
+                    ["rm", "-f", str(theirs / "raw.csv")],
+                    ["clem", "eval", "-r", str(theirs), "-g", "cobot_instruct", "-m", "rulebased"],
+                    ["clem", "eval", "-r", str(theirs), "-g", "cobot_instruct", "-m", "erring"]):
         step = _run(command)
         assert step.returncode == 0, step.stdout + step.stderr
     compare = _compare()
     everything = {**compare.files(theirs)}
     assert set(compare.files(ours)) - {"main.log"} == set(everything) - {"clembench.log"}
-    roots = [ours.resolve(), theirs.resolve(), tmp_path.resolve()]
-    differ = {name: why for name, path in everything.items() if name in compare.files(ours)
-              for why in [compare.compare(name, compare.files(ours)[name], path, roots,
+    assert (ours / "rulebased" / "run.json").is_file() and (ours / "erring" / "run.json").is_file()
+    places = ({ours.resolve(): b"<results>"}, {theirs.resolve(): b"<results>"})
+    mine = compare.files(ours)
+    differ = {name: why for name, path in everything.items() if name in mine
+              for why in [compare.compare(name, mine[name], path, places,
                                           Path(name).name in ("scores.json", "raw.csv", "results.csv", "interactions.json"))]
               if why is not None}
     assert not differ, differ
+
+
+def test_one_instance_file_for_every_game_needs_the_games(tmp_path):
+    done = _run(["sartco", "suite", "-r", str(tmp_path), "-i", "instances_smoke"])
+    assert done.returncode == 2 and "give the games with -g" in done.stderr
 
 
 def test_a_results_folder_that_holds_a_run_of_the_plan_is_refused(tmp_path):
