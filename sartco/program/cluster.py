@@ -29,10 +29,12 @@ CHUNK = 256  # programs per Ray task: a task's overhead (~ms) spread over many f
 
 
 def _run_chunk(programs: list[str], rows: int, cols: int, limits: list[Any], semantics: str) -> list[tuple[Any, ...]]:
-    """On a Ray worker: the chunk in that node's local sandbox, as plain tuples."""
+    """On a Ray worker: the chunk in that node's local sandbox, on one template process (a task
+    holds one CPU: Ray runs as many tasks side by side as a node has CPUs), as plain tuples."""
     from sartco.program import pool
 
-    return [astuple(ex) for ex in pool.local().execute_many(programs, rows, cols, Limits(*limits), semantics=semantics)]
+    return [astuple(ex) for ex in pool.local().execute_many(programs, rows, cols, Limits(*limits), workers=1,
+                                                            semantics=semantics)]
 
 
 class RaySandbox:
