@@ -1,6 +1,6 @@
 """The scheduler of `sartco suite` (sartco/suite.py): tasks that wait for each other, on a few
-forked worker processes whose output goes to a log file; a worker keeps to one game while that
-game has episodes to play (its process keeps the probe draws of the boards it probed), and the
+forked worker processes whose output goes to a log file; a worker keeps to one group of tasks
+while the group has tasks to run (its process keeps the probe draws of the boards it probed), and the
 CPU time of each task is measured where it ran (its sandbox processes included).
 """
 from __future__ import annotations
@@ -29,6 +29,7 @@ class Task:
     after: tuple = ()
     index: int = 0          # a play's place in the plan (its stage folder)
     instances: str | None = None  # a play's instance file (clem run's -i), None: the game's own
+    group: str = ""         # plays that share work a process keeps (a worker keeps to one group)
 
 
 @dataclass
@@ -63,18 +64,18 @@ def _serve(work, inbox, outbox, results: str, log: str) -> None:
 
 
 def _pick(ready: list[Task], last: str | None, busy: set[str]) -> Task:
-    """The task a free worker takes: the next of the game it played last (its process keeps that
-    game's probe draws, sartco.clem.core.probes), else one of a game no other worker is playing,
-    else the first."""
-    return (next((t for t in ready if t.game and t.game == last), None)
-            or next((t for t in ready if t.game not in busy), None) or ready[0])
+    """The task a free worker takes: the next of the group it played last (its process keeps what
+    that group shares: the probe draws of the same boards), else one of a group no other worker
+    is playing, else the first."""
+    return (next((t for t in ready if t.group and t.group == last), None)
+            or next((t for t in ready if t.group not in busy), None) or ready[0])
 
 
 def schedule(work, tasks: list[Task], workers: int, results: Path, say, priority: tuple = ()) -> list[Done]:
     """Run work(task, results) for the tasks on `workers` processes (forked now: what the caller
     imported is imported there), each as soon as
     the ones it waits for are done: the preparations first, then the plays by `priority` (games), a worker
-    keeping to one game while it has episodes to play; stop starting new ones after a failure."""
+    keeping to one group while it has plays to run; stop starting new ones after a failure."""
     context = multiprocessing.get_context("fork")
     outbox = context.Queue()
     order = {game: n for n, game in enumerate(priority)}
@@ -94,9 +95,9 @@ def schedule(work, tasks: list[Task], workers: int, results: Path, say, priority
                 ready = [t for t in pending if all(a in done and done[a].ok for a in t.after)]
                 if w in running or failed or not ready:
                     continue
-                task = _pick(ready, last[w], {t.game for t in running.values()})
+                task = _pick(ready, last[w], {t.group for t in running.values()})
                 pending.remove(task)
-                running[w], last[w] = task, task.game or last[w]
+                running[w], last[w] = task, task.group or last[w]
                 inboxes[w].put(task)
             if failed and not running:
                 break

@@ -53,8 +53,13 @@ from sartco.schedule import CLEM_SETTINGS, LOG, Done, Task, cpu_seconds, schedul
 STAGE = ".suite"
 PAPER_SETTINGS = (0.0, 250)   # the paper protocol's -t and -l
 # the order in which ready plays start (the longest first), by game; the plan's order is clem eval's
-PRIORITY = ("cobot_instruct_paper", "cobot_instruct_fresh", "cobot_instruct_published", "cobot_instruct",
+PRIORITY = ("cobot_instruct_paper", "cobot_instruct_published", "cobot_instruct_fresh", "cobot_instruct",
             "cobot_describe_dialogue", "cobot_describe", "cobot_instruct_feedback", "cobot_instruct_ablations")
+# the games whose probes draw on the same boards (the same gold programs and board ids): a worker
+# keeps to one group, so that its process computes each board's draws once (sartco.clem.core.probes)
+BOARDS = {"cobot_instruct": "generated", "cobot_instruct_feedback": "generated", "cobot_describe": "generated",
+          "cobot_describe_dialogue": "generated", "cobot_instruct_published": "published",
+          "cobot_instruct_fresh": "published"}
 
 
 
@@ -78,8 +83,8 @@ def plan(models: list[str], erring: list[str], fresh_seed: int, data: str) -> li
                   ("cobot_instruct_feedback", first, CLEM_SETTINGS)]
     for model in erring:
         pairs += [("cobot_instruct_feedback", model, CLEM_SETTINGS), ("cobot_describe_dialogue", model, CLEM_SETTINGS)]
-    tasks += [Task(f"{game} ({model})", "play", game=game, model=model, settings=s, after=needs.get(game, ()), index=n)
-              for n, (game, model, s) in enumerate(pairs)]
+    tasks += [Task(f"{game} ({model})", "play", game=game, model=model, settings=s, after=needs.get(game, ()), index=n,
+                   group=BOARDS.get(game, game)) for n, (game, model, s) in enumerate(pairs)]
     return tasks
 
 

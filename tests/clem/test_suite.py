@@ -48,11 +48,15 @@ def test_only_keeps_the_games_asked_for_and_what_they_wait_for():
         suite.only(suite.plan(["mock"], [], 7, "DATA"), ["cobot_nothing"])
 
 
-def test_the_next_task_of_a_worker_is_of_the_game_it_played():
-    a, b, c = (schedule.Task(f"t{n}", "play", game=g, index=n) for n, g in enumerate(["g1", "g2", "g1"]))
-    assert schedule._pick([a, b, c], "g2", set()) is b
-    assert schedule._pick([a, b, c], None, {"g1"}) is b
-    assert schedule._pick([a, c], "g3", {"g1"}) is a
+def test_the_next_task_of_a_worker_is_of_the_group_it_played():
+    a, b, c = (schedule.Task(f"t{n}", "play", game=g, group=g[0], index=n) for n, g in enumerate(["g1", "h2", "g3"]))
+    assert schedule._pick([a, b, c], "h", set()) is b
+    assert schedule._pick([a, b, c], None, {"g"}) is b
+    assert schedule._pick([a, c], "x", {"g"}) is a
+    tasks = suite.plan(["mock"], ["erring"], 7, "DATA")
+    groups = {t.game: t.group for t in tasks if t.kind == "play"}
+    assert groups["cobot_describe_dialogue"] == groups["cobot_instruct"] == groups["cobot_instruct_feedback"]
+    assert groups["cobot_instruct_fresh"] == groups["cobot_instruct_published"] != groups["cobot_instruct"]
 
 
 def _run(args, cwd=REPO):
