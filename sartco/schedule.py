@@ -63,12 +63,16 @@ def _serve(work, inbox, outbox, results: str, log: str) -> None:
         outbox.put(work(task, results))
 
 
-def _pick(ready: list[Task], last: str | None, busy: set[str]) -> Task:
+def _pick(ready: list[Task], last: str | None, busy: set[str], pending: list[Task]) -> Task | None:
     """The task a free worker takes: the next of the group it played last (its process keeps what
     that group shares: the probe draws of the same boards), else one of a group no other worker
-    is playing, else the first."""
-    return (next((t for t in ready if t.group and t.group == last), None)
-            or next((t for t in ready if t.group not in busy), None) or ready[0])
+    is playing, else one of a group with more tasks waiting than this one; None (wait) when the
+    only ready task is the last of a group another worker is playing: that worker will find the
+    group's work done."""
+    same = next((t for t in ready if t.group and t.group == last), None)
+    free = next((t for t in ready if t.group not in busy), None)
+    shared = next((t for t in ready if sum(p.group == t.group for p in pending) > 1), None)
+    return same or free or shared
 
 
 def schedule(work, tasks: list[Task], workers: int, results: Path, say, priority: tuple = ()) -> list[Done]:
@@ -95,7 +99,9 @@ def schedule(work, tasks: list[Task], workers: int, results: Path, say, priority
                 ready = [t for t in pending if all(a in done and done[a].ok for a in t.after)]
                 if w in running or failed or not ready:
                     continue
-                task = _pick(ready, last[w], {t.group for t in running.values()})
+                task = _pick(ready, last[w], {t.group for t in running.values()}, pending)
+                if task is None:
+                    continue
                 pending.remove(task)
                 running[w], last[w] = task, task.group or last[w]
                 inboxes[w].put(task)

@@ -50,9 +50,10 @@ def test_only_keeps_the_games_asked_for_and_what_they_wait_for():
 
 def test_the_next_task_of_a_worker_is_of_the_group_it_played():
     a, b, c = (schedule.Task(f"t{n}", "play", game=g, group=g[0], index=n) for n, g in enumerate(["g1", "h2", "g3"]))
-    assert schedule._pick([a, b, c], "h", set()) is b
-    assert schedule._pick([a, b, c], None, {"g"}) is b
-    assert schedule._pick([a, c], "x", {"g"}) is a
+    assert schedule._pick([a, b, c], "h", set(), [a, b, c]) is b
+    assert schedule._pick([a, b, c], None, {"g"}, [a, b, c]) is b
+    assert schedule._pick([a, c], "x", {"g"}, [a, c]) is a          # two of the busy group wait: share them
+    assert schedule._pick([c], "x", {"g"}, [c]) is None             # the busy group's last one: wait for it
     tasks = suite.plan(["mock"], ["erring"], 7, "DATA")
     groups = {t.game: t.group for t in tasks if t.kind == "play"}
     assert groups["cobot_describe_dialogue"] == groups["cobot_instruct"] == groups["cobot_instruct_feedback"]
