@@ -71,50 +71,44 @@ def test_two_workers_without_cache_answer_in_order():
     pool.shutdown()
 
 
-def test_a_repeated_program_runs_once_until_the_sandbox_is_closed(monkeypatch):
+@pytest.fixture
+def counted(monkeypatch):
+    """A fresh LocalSandbox and the number of programs each of its calls sent to the templates."""
+    box = pool.LocalSandbox()
+    sent: list[int] = []
+    real = pool.dispatch
+
+    def counting(sandbox, items, *args):
+        sent.append(len(items))
+        return real(sandbox, items, *args)
+
+    monkeypatch.setattr(pool, "dispatch", counting)
+    yield box, sent
+    box.close()
+
+
+def test_a_repeated_program_runs_once_until_the_sandbox_is_closed(counted):
     """The memo of verdicts: a program seen before (same board size, limits, semantics) is not
     run again, and gets an equal Execution of its own; close() forgets it."""
-    box = pool.LocalSandbox()
-    sent: list[int] = []
-    real = pool.dispatch
-
-    def counting(sandbox, items, *args):
-        sent.append(len(items))
-        return real(sandbox, items, *args)
-
-    monkeypatch.setattr(pool, "dispatch", counting)
-    try:
-        first = box.execute_many([_benign(1), _benign(2)])
-        again = box.execute_many([_benign(2), _benign(1), _benign(3)])
-        assert sent == [2, 1]
-        assert (again[0], again[1]) == (first[1], first[0]) and again[0].cells is not first[1].cells
-        again[0].cells.clear()  # a caller's change reaches no other caller
-        assert box.execute_many([_benign(2)])[0] == first[1]
-        box.execute_many([_benign(1)], 8, 9)  # another board size: run
-        box.execute_many([_benign(1)], cache=False)  # no cache: run
-        assert sent == [2, 1, 1, 1]
-        box.close()
-        box.execute_many([_benign(1)])
-        assert sent == [2, 1, 1, 1, 1]
-    finally:
-        box.close()
+    box, sent = counted
+    first = box.execute_many([_benign(1), _benign(2)])
+    again = box.execute_many([_benign(2), _benign(1), _benign(3)])
+    assert sent == [2, 1]
+    assert (again[0], again[1]) == (first[1], first[0]) and again[0].cells is not first[1].cells
+    again[0].cells.clear()  # a caller's change reaches no other caller
+    assert box.execute_many([_benign(2)])[0] == first[1]
+    box.execute_many([_benign(1)], 8, 9)  # another board size: run
+    box.execute_many([_benign(1)], cache=False)  # no cache: run
+    assert sent == [2, 1, 1, 1]
+    box.close()
+    box.execute_many([_benign(1)])
+    assert sent == [2, 1, 1, 1, 1]
 
 
-def test_verdicts_that_depend_on_the_machine_are_not_kept(monkeypatch):
-    box = pool.LocalSandbox()
-    sent: list[int] = []
-    real = pool.dispatch
-
-    def counting(sandbox, items, *args):
-        sent.append(len(items))
-        return real(sandbox, items, *args)
-
-    monkeypatch.setattr(pool, "dispatch", counting)
-    try:
-        limits = Limits(wall_time=0.3)
-        for _ in range(2):
-            [ex] = box.execute_many([RUNAWAY], limits=limits)
-            assert ex.error in (ErrorCode.TIMEOUT, ErrorCode.RESOURCE_LIMIT)
-        assert sent == [1, 1]
-    finally:
-        box.close()
+def test_verdicts_that_depend_on_the_machine_are_not_kept(counted):
+    box, sent = counted
+    limits = Limits(wall_time=0.3)
+    for _ in range(2):
+        [ex] = box.execute_many([RUNAWAY], limits=limits)
+        assert ex.error in (ErrorCode.TIMEOUT, ErrorCode.RESOURCE_LIMIT)
+    assert sent == [1, 1]
