@@ -76,4 +76,5 @@ print(f"{'wall s':58s} {bw:9.1f} {nw:9.1f} {nw / bw:9.3f}")
 print(f"{'CPU s (user + sys, children included)':58s} {bc:9.1f} {nc:9.1f} {nc / bc:9.3f}")
 EOF
 echo
-python3 "$HERE/compare_results.py" "$OUT/base.results" "$OUT/new.results" "$OUT/base.scores" "$OUT/new.scores"
+python3 "$HERE/compare_results.py" "$OUT/base.results" "$OUT/new.results" "$OUT/base.scores" "$OUT/new.scores" \
+  --checkouts "$(cd "$1" && pwd)" "$(cd "$2" && pwd)"
