@@ -80,6 +80,7 @@ Modules (each one's docstring has the details):
   json_module.py  the json stand-in (plain data, output counted against the length budget)
   confine.py      the kernel's walls: the seccomp filter (compiled by libseccomp) and rlimits
   worker.py       the template process: one confined child per program, its end and answer
+                  (mode "gold": the harness's own gold programs of a batch in one child)
   verdict.py      the parent decides: a child's end and put log -> Execution, the board replayed
   driver.py       the parent's side of one template: chunks, answers, the template's failures
   pool.py         LocalSandbox: templates, batching, restarts

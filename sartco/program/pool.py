@@ -34,6 +34,7 @@ from .execution import MODULE, SEMANTICS, Execution, Limits, not_a_str
 from .verdict import failed
 
 BATCH = 32  # a call with fewer items than this uses one template
+GOLD = "gold"  # execute_many's mode for the harness's own reference programs (worker.py)
 MEMO = 50_000  # verdicts a LocalSandbox keeps for repeated programs (a few KB each)
 TRANSIENT = frozenset({ErrorCode.TIMEOUT, ErrorCode.RESOURCE_LIMIT, ErrorCode.HARNESS_ERROR})
 MemoKey = tuple[str, int, int, Limits, str, str]  # source, rows, cols, limits, semantics, mode
@@ -129,7 +130,9 @@ class LocalSandbox:
                      mode: str = "code") -> list[Execution]:
         """Run many programs, each in its own confined process on its own fresh board; results in
         input order. `semantics`: MODULE (a script's namespace) or PAPER (the authors' exec, see
-        namespaces.py)."""
+        namespaces.py). `mode` GOLD: the harness's own reference programs (an instance's gold
+        code, never a model's), which may share a child per chunk (worker.py, mode "gold"); their
+        verdicts are those of mode "code" and are kept as such."""
         if semantics not in SEMANTICS:
             raise ValueError(f"unknown semantics {semantics!r}; expected one of {', '.join(SEMANTICS)}")
         try:
@@ -140,6 +143,7 @@ class LocalSandbox:
             except WorldError as exc:
                 return [failed(exc.code, exc.message) for _ in programs]
             results: list = [None] * len(programs)
+            kept = "code" if mode == GOLD else mode  # the memo's mode: a gold verdict is a code one
             first: dict[str, int] = {}  # source -> the index of the item that runs it (cache)
             todo, copies = [], []
             for i, p in enumerate(programs):
@@ -147,7 +151,7 @@ class LocalSandbox:
                     results[i] = failed(ErrorCode.TYPE_ERROR, not_a_str(p))
                 elif cache and p in first:
                     copies.append((i, first[p]))
-                elif cache and (known := self._recall((p, rows, cols, limits, semantics, mode))) is not None:
+                elif cache and (known := self._recall((p, rows, cols, limits, semantics, kept))) is not None:
                     results[i] = known
                 else:
                     first.setdefault(p, i)
@@ -157,7 +161,7 @@ class LocalSandbox:
             for i, answer in zip(todo, answers):
                 results[i] = answer
                 if cache and type(answer) is Execution:
-                    self._remember((programs[i], rows, cols, limits, semantics, mode), answer)
+                    self._remember((programs[i], rows, cols, limits, semantics, kept), answer)
             for i, source in copies:
                 results[i] = results[source]
             return [r if type(r) is Execution else failed(ErrorCode.HARNESS_ERROR, "the sandbox returned no result")

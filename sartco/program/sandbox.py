@@ -22,7 +22,7 @@ from typing import Iterable, Protocol, runtime_checkable
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
 
 from .execution import MODULE, Execution, Limits
-from .pool import LocalSandbox, local
+from .pool import GOLD, LocalSandbox, local
 
 
 @runtime_checkable
@@ -62,10 +62,13 @@ def execute(code: str, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, limit
 
 
 def execute_many(programs: Iterable[str], rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, limits: Limits | None = None, *,
-                 workers: int | None = None, cache: bool = True, semantics: str = MODULE) -> list[Execution]:
-    """Run many programs in the sandbox in use, results in input order. `workers` and `cache`
-    are the local sandbox's (pool.LocalSandbox.execute_many); another sandbox ignores them."""
+                 workers: int | None = None, cache: bool = True, semantics: str = MODULE,
+                 gold: bool = False) -> list[Execution]:
+    """Run many programs in the sandbox in use, results in input order. `workers`, `cache` and
+    `gold` (the programs are the harness's own reference code, never a model's: pool.GOLD) are
+    the local sandbox's (pool.LocalSandbox.execute_many); another sandbox ignores them."""
     box = current()
     if isinstance(box, LocalSandbox):
-        return box.execute_many(programs, rows, cols, limits, workers=workers, cache=cache, semantics=semantics)
+        return box.execute_many(programs, rows, cols, limits, workers=workers, cache=cache, semantics=semantics,
+                                mode=GOLD if gold else "code")
     return box.execute_many(programs, rows, cols, limits, semantics=semantics)

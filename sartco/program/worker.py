@@ -1,13 +1,14 @@
 """The template process: it imports what programs need, builds the kernel's walls, runs no
 program itself, and forks one confined child per program. The child runs that one program and
-exits, so nothing a program does outlives it: no process runs a second program.
+exits, so nothing a program does outlives it: no process runs a second program of a model (only
+the harness's own gold programs of one batch may share a child: mode "gold" below).
 
 Protocol with the parent (driver.py), lines of bytes:
   parent -> template, once at start: the seccomp filter, a BPF program in base64 (confine.py)
   template -> parent, once at start: "ready", or "unconfined: <why>" (then it exits: the kernel's
       walls cannot be built here, and no program runs unconfined)
   parent -> template, per chunk: a header {"limits": [...Limits fields...], "rows": R, "cols": C,
-      "semantics": "module" | "paper", "items": K, "mode": "code" | "breach"}, then K lines, each a
+      "semantics": "module" | "paper", "items": K, "mode": "code" | "gold" | "breach"}, then K lines, each a
       program's source as a JSON string
   template -> parent, one line per item, in order: b"<how> <status> <answer as base64>", where
       <how> is how the child ended: "exit" (status: its exit status), "signal" (status: the signal
@@ -15,6 +16,8 @@ Protocol with the parent (driver.py), lines of bytes:
       than ANSWER_BYTES), "unconfined" (it ended before its walls were up: no program ran).
 The template decides nothing about the program: the parent reads the child's answer (a put log
 of plain values and an outcome, see runtime.answer) and decides the board (verdict.py).
+
+Mode "gold" (gold.py): the harness's own gold programs of one chunk in one child.
 
 The child, between fork and the program's first line (`_child`): its descriptors become /dev/null
 (0, 1, 2) and its answer pipe (3), every other one closed; then the rlimits, death with the
@@ -41,6 +44,14 @@ import select
 import signal
 import sys
 import time
+from collections.abc import Callable, Iterable
+from types import ModuleType
+from typing import TYPE_CHECKING
+
+from . import gold
+
+if TYPE_CHECKING:
+    from .execution import Limits
 
 OUT_OF_MEMORY = 3  # a child's exit status after a MemoryError outside the program's own run
 FAILED = 4  # a child's exit status when its own code failed after the walls were up
@@ -70,6 +81,8 @@ def _vm_bytes() -> int:
 
 class Template:
     """What the children are forked from: the filter, the template's size, /dev/null."""
+
+    runtime: ModuleType  # sartco.program.runtime, imported in the template only
 
     def __init__(self, bpf: bytes, breach: bool = False):
         from . import confine, runtime
@@ -116,9 +129,15 @@ class Template:
         if (how, status, answer) != (b"exit", 0, b"%d" % errno.EPERM):
             raise Unconfinable(f"a confined process could open a file ({how.decode()} {status} {answer[:40]!r})")
 
-    def fork(self, work, limits) -> tuple[bytes, int, bytes]:
+    def fork(self, work: Callable[[], bytes], limits: Limits) -> tuple[bytes, int, bytes]:
         """Run work() (-> the answer's bytes) in a fresh confined child; how it ended, its status
         and what it wrote after CONFINED."""
+        return self.spawn(lambda: (work(),), limits, limits, 0)
+
+    def spawn(self, work: Callable[[], Iterable[bytes]], limits: Limits, walls: Limits,
+               frames: int) -> tuple[bytes, int, bytes]:
+        """Fork a confined child (rlimits of `walls`) that writes every chunk of work(); with
+        `frames`, what it writes is that many framed answers, and each has limits.wall_time."""
         read, write = os.pipe()
         pid = self._fork()
         if pid < 0:
@@ -126,14 +145,14 @@ class Template:
             os.close(write)
             raise OSError(ctypes.get_errno(), "fork")
         if pid == 0:
-            self._child(work, limits, write)  # never returns
+            self._child(work, walls, write)  # never returns
         os.close(write)
         try:
-            return self._collect(pid, read, time.monotonic() + limits.wall_time)
+            return self._collect(pid, read, limits.wall_time, frames)
         finally:
             os.close(read)
 
-    def _child(self, work, limits, write: int) -> None:
+    def _child(self, work: Callable[[], Iterable[bytes]], limits: Limits, write: int) -> None:
         status = FAILED
         try:
             for fd in (0, 1, 2):
@@ -142,10 +161,10 @@ class Template:
             os.closerange(4, MAX_FD)
             self.filter.apply(limits, self.base)
             os.write(3, CONFINED)
-            answer = work()
-            view = memoryview(answer)
-            while view:
-                view = view[os.write(3, view):]
+            for answer in work():
+                view = memoryview(answer)
+                while view:
+                    view = view[os.write(3, view):]
             status = 0
         except MemoryError:
             status = OUT_OF_MEMORY
@@ -154,9 +173,10 @@ class Template:
         finally:
             os._exit(status)
 
-    def _collect(self, pid: int, read: int, deadline: float) -> tuple[bytes, int, bytes]:
+    def _collect(self, pid: int, read: int, wall_time: float, frames: int = 0) -> tuple[bytes, int, bytes]:
         chunks: list[bytes] = []
-        size = 0
+        size, done, cap = 0, 0, ANSWER_BYTES * max(1, frames)
+        deadline = time.monotonic() + wall_time
         try:
             pidfd = os.pidfd_open(pid)
         except (AttributeError, OSError):
@@ -177,16 +197,18 @@ class Template:
                     else:
                         chunks.append(chunk)
                         size += len(chunk)
-                        if size > ANSWER_BYTES + 1:
+                        if size > cap + 1:
                             how = b"overflow"
                             break
+                        if frames and (n := len(gold.frames(b"".join(chunks)[len(CONFINED):]))) > done:
+                            done, deadline = n, time.monotonic() + wall_time  # the next one's time starts
                 if pidfd is not None and pidfd in ready:
                     watch.remove(pidfd)
                     if read in watch:  # the child ended: read what it left in the pipe
                         while chunk := os.read(read, 1 << 16):
                             chunks.append(chunk)
                             size += len(chunk)
-                            if size > ANSWER_BYTES + 1:
+                            if size > cap + 1:
                                 how = b"overflow"
                                 break
                         watch.remove(read)
@@ -224,8 +246,15 @@ class Template:
             request = json.loads(header)
             limits = Limits(*request["limits"])
             rows, cols, semantics = request["rows"], request["cols"], request["semantics"]
-            breach = request.get("mode") == "breach"
+            mode = request.get("mode")
+            breach = mode == "breach"
             items = [inp.readline() for _ in range(request["items"])]
+            if mode == "gold":
+                for how, status, answer in gold.run(self, [json.loads(item) for item in items], rows, cols, limits,
+                                                    semantics):
+                    out.write(b"%s %d %s\n" % (how, status, base64.b64encode(answer)))
+                out.flush()
+                continue
             for item in items:
                 source = json.loads(item)
                 if breach and not self.breach:

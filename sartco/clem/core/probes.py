@@ -24,8 +24,9 @@ without error, no piece lies directly on a piece of its colour, and its board di
 episode's target (so never the episode's own arguments) and from the kept ones. K (instance
 field `probes`, default DEFAULT_PROBES; 0 turns the probes off), the first kept in draw order,
 from rounds of CANDIDATES x K candidates (ROUNDS at most). Every program runs in the sandbox
-(sartco.clem.core.sandbox.run_many): the gold candidates in batches until K are kept, one batch for
-the K probes; a harness_error raises HarnessFault. A process keeps the draws of the boards it probed
+(sartco.clem.core.sandbox.run_many): the gold candidates a round at a time (the harness's own
+programs: one confined child per round, `gold=True`), one batch for the K probes of an answer (a
+confined child per program); a harness_error raises HarnessFault. A process keeps the draws of the boards it probed
 (`gold_draws`): every model's episode on a board, and every game's, compares with the same ones.
 
 sequence_function episodes are not probed: their gold function (and the prompt's examples)
@@ -36,6 +37,7 @@ from __future__ import annotations
 
 import ast
 import copy
+import functools
 import json
 import random
 import threading
@@ -102,6 +104,7 @@ def probed_function(code: str, given_code: str = "") -> str | None:
     return None
 
 
+@functools.lru_cache(maxsize=1024)  # a draw's candidates and an answer's probes share it
 def without_usage(code: str, name: str) -> str:
     """`code` without its top-level statements that call `name` (the usage line or loop)."""
     tree = _parse(code)
@@ -130,10 +133,9 @@ def _plain_colours(cells: dict) -> bool:
 
 def draw_arguments(instance: dict, gold: str, name: str, k: int, seed: int = PROBE_SEED) -> list[tuple[dict, dict]]:
     """Up to k (arguments, gold board) pairs (module doc), the same for a seed on every run:
-    rounds of CANDIDATES x k candidates until k are kept (ROUNDS at most). The candidates of a
-    round run in draw order, in sandbox batches of as many as are still wanted, so none runs whose
-    board could not be kept: the first k that qualify, in draw order, as if all had run (24 %
-    fewer programs than whole rounds on two paper experiments, the same draws)."""
+    rounds of CANDIDATES x k candidates until k are kept (ROUNDS at most), the first k that
+    qualify in draw order. A round is one sandbox batch of gold programs (`run_many(gold=True)`:
+    one confined child for the round in the local sandbox, sartco.program.worker's mode "gold")."""
     from .sandbox import run_many
 
     rows, cols, n = instance["rows"], instance["cols"], len(combo_of(instance))
@@ -143,18 +145,14 @@ def draw_arguments(instance: dict, gold: str, name: str, k: int, seed: int = PRO
     for _ in range(ROUNDS):
         candidates = [{"colors": [rng.choice(COLORS) for _ in range(n)], "x": rng.randrange(rows),
                        "y": rng.randrange(cols)} for _ in range(CANDIDATES * k)]
-        start = 0
-        while start < len(candidates) and len(kept) < k:
-            batch = candidates[start:start + k - len(kept)]
-            start += len(batch)
-            runs = run_many([probe_program(gold, name, a, given_code=instance["given_code"], rows=rows, cols=cols)
-                             for a in batch], rows, cols)
-            for args, ex in zip(batch, runs):
-                if ex.error == ErrorCode.HARNESS_ERROR:
-                    raise HarnessFault(f"sandbox (gold probe): {ex.message}")
-                if ex.ok and _plain_colours(ex.cells) and ex.cells not in boards and len(kept) < k:
-                    kept.append((args, ex.cells))
-                    boards.append(ex.cells)
+        runs = run_many([probe_program(gold, name, a, given_code=instance["given_code"], rows=rows, cols=cols)
+                         for a in candidates], rows, cols, gold=True)
+        for args, ex in zip(candidates, runs):
+            if ex.error == ErrorCode.HARNESS_ERROR:
+                raise HarnessFault(f"sandbox (gold probe): {ex.message}")
+            if ex.ok and _plain_colours(ex.cells) and ex.cells not in boards and len(kept) < k:
+                kept.append((args, ex.cells))
+                boards.append(ex.cells)
         if len(kept) == k:
             break
     return kept

@@ -6,14 +6,18 @@ verdict through `judge`.
 """
 from __future__ import annotations
 
-from sartco.program import Execution, current, judge
+from sartco.program import Execution, current, execute_many, judge
 
 __all__ = ["run_many", "judge", "restart"]
 
 
-def run_many(programs: list[str], rows: int, cols: int) -> list[Execution]:
-    """Each program on its own fresh rows x cols board, results in input order."""
-    return current().execute_many(programs, rows, cols) if programs else []
+def run_many(programs: list[str], rows: int, cols: int, *, gold: bool = False) -> list[Execution]:
+    """Each program on its own fresh rows x cols board, results in input order. `gold`: the
+    programs are an instance's gold code at the probes' candidate arguments, never a model's (the
+    local sandbox runs a batch of them in one confined child: sartco.program.worker, mode "gold")."""
+    if not programs:
+        return []
+    return execute_many(programs, rows, cols, gold=True) if gold else current().execute_many(programs, rows, cols)
 
 
 def restart() -> None:

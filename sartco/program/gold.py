@@ -1,0 +1,86 @@
+"""The sandbox's mode "gold" (worker.py): the harness's own gold programs of one chunk in one child.
+
+It is for the harness's own reference programs alone (an instance's gold function at the
+probes' candidate arguments, sartco.clem.core.probes), never a model's: the chunk's programs run
+one after another in ONE confined child, each on its own fresh board and namespace with its own
+budgets, each answer framed (4-byte length + answer) and written as it finishes; every item has
+Limits.wall_time from the end of the one before. The walls are the same (the CPU rlimit covers
+the chunk). Answers equal those of a child per program: a program's verdict depends only on its
+source, board and budgets. What could depend on the programs before it in the same process (a
+`timeout` or `resource_limit` answer, a child that ended or was killed before the last answer)
+is not used: that item and every one after it run again, each in a child of its own, as in mode
+"code". Why: a fork, its page faults and its exit cost about 2 ms here, a probe candidate's
+run 0.15-0.3 ms, and a board's probe draw runs about 21 candidates (sartco.clem.core.probes);
+the 1,560 draws of the paper protocol took 29.0 s a child per program, 7.6 s a child per round.
+"""
+from __future__ import annotations
+
+import json
+from collections.abc import Iterator
+from dataclasses import replace
+from functools import partial
+from types import ModuleType
+from typing import TYPE_CHECKING, Callable, Iterable, Protocol
+
+if TYPE_CHECKING:
+    from .execution import Limits
+
+
+class Template(Protocol):
+    """What run() needs of worker.Template: its runtime module and its two ways to fork."""
+    runtime: ModuleType
+
+    def fork(self, work: Callable[[], bytes], limits: Limits) -> tuple[bytes, int, bytes]: ...
+
+    def spawn(self, work: Callable[[], Iterable[bytes]], limits: Limits, walls: Limits,
+              frames: int) -> tuple[bytes, int, bytes]: ...
+
+# an answer that could depend on the programs run before it in the same child
+UNSURE = frozenset({"timeout", "resource_limit", None})
+ENDS = (b"exit", b"signal", b"timeout", b"overflow")  # a child that ran (it may have left answers)
+
+
+def frames(data: bytes) -> list[bytes]:
+    """The complete framed answers (4-byte big-endian length + answer) at the start of data."""
+    out, at = [], 0
+    while at + 4 <= len(data):
+        end = at + 4 + int.from_bytes(data[at:at + 4], "big")
+        if end > len(data):
+            break
+        out.append(data[at + 4:end])
+        at = end
+    return out
+
+
+def outcome(answer: bytes) -> str | None:
+    """An answer's error code ("" for a program that ran to the end), None for no answer."""
+    try:
+        code = json.loads(answer)[1]
+    except (ValueError, IndexError, TypeError):
+        return None
+    if code is None:
+        return ""
+    return code if isinstance(code, str) else None
+
+
+def run(template: Template, sources: list[str], rows: int, cols: int, limits: Limits,
+        semantics: str) -> list[tuple[bytes, int, bytes]]:
+    """(how, status, answer) per source, as the template reports them: the sources in one child;
+    from the first answer that the programs before it could have changed (or none came), each
+    in a child of its own."""
+    runtime = template.runtime
+
+    def work() -> Iterator[bytes]:
+        for source in sources:
+            answer = runtime.answer(source, rows, cols, limits, semantics)
+            yield len(answer).to_bytes(4, "big") + answer
+
+    walls = replace(limits, wall_time=limits.wall_time * len(sources))  # the CPU rlimit covers the chunk
+    how, _, data = template.spawn(work, limits, walls, len(sources))
+    done: list[tuple[bytes, int, bytes]] = []
+    for answer in frames(data) if how in ENDS else []:
+        if outcome(answer) in UNSURE:
+            break
+        done.append((b"exit", 0, answer))
+    return done + [template.fork(partial(runtime.answer, s, rows, cols, limits, semantics), limits)
+                   for s in sources[len(done):]]
