@@ -217,8 +217,8 @@ class RunRecorder:
         sessions = self.previous_sessions + [self.session]
         first = sessions[0]
         data = {"game": self.game_name, "model": path.parent.parent.name,
-                "sartco_version": _version("sartco-bench"), "git_commit": self.software["git_commit"],
-                "clemcore_version": _version("clemcore"), "python": self.software["python"],
+                "sartco_version": self.software["packages"]["sartco-bench"], "git_commit": self.software["git_commit"],
+                "clemcore_version": self.software["packages"]["clemcore"], "python": self.software["python"],
                 "packages": self.software["packages"], "seeds": self.software["seeds"],
                 "instance_file": first["instance_file"], "models": first["models"], "generation": first["generation"],
                 "batch_size": first.get("batch_size"), "start": first["start"], "end": sessions[-1]["end"],
