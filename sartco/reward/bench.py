@@ -17,10 +17,10 @@ before (they depend on the episode alone and are kept by `Episodes`) and timed a
 from __future__ import annotations
 
 import os
-import resource
 import time
 from pathlib import Path
 
+from sartco.clock import cpu_seconds
 from sartco.clem.core.probes import probed
 from sartco.clem.core.sandbox import restart, run_many
 from sartco.clem.players.answers import instruct_answers
@@ -66,12 +66,6 @@ def answer_sets(episodes: Episodes) -> dict[tuple[str, str], list[tuple[str, obj
             answers = [source.answer(t) for t in range(turns)]
             sets.setdefault((label, kind), []).append((key, answers[0] if turns == 1 else answers))
     return sets
-
-
-def cpu_seconds() -> float:
-    """CPU time of this process and of its reaped children (the sandbox's workers once restarted)."""
-    me, children = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
-    return me.ru_utime + me.ru_stime + children.ru_utime + children.ru_stime
 
 
 def idle_cpu() -> float:

@@ -14,7 +14,7 @@ ROOT = Path(__file__).resolve().parents[2]
 # lowest first; a module may import modules of its own rank's package and of lower ranks
 LAYERS = [
     ("settings", ["sartco.settings"]),
-    ("base", ["sartco.errors", "sartco.dataset", "sartco.episode", "sartco.text"]),
+    ("base", ["sartco.errors", "sartco.dataset", "sartco.episode", "sartco.text", "sartco.clock"]),
     ("world", ["sartco.world"]),
     ("program", ["sartco.program"]),
     ("data", ["sartco.instances", "sartco.follower"]),
