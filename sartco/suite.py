@@ -48,7 +48,8 @@ from dataclasses import replace
 from pathlib import Path
 
 from sartco.errors import UserError
-from sartco.schedule import CLEM_SETTINGS, LOG, Done, Task, cpu_seconds, schedule
+from sartco.clock import cpu_seconds
+from sartco.schedule import CLEM_SETTINGS, LOG, Done, Task, schedule
 
 STAGE = ".suite"
 PAPER_SETTINGS = (0.0, 250)   # the paper protocol's -t and -l
@@ -188,6 +189,45 @@ def merge_run_files(results: Path, tasks: list[Task]) -> None:
             json.dump(data, f, indent=2)  # clemcore's store_json
 
 
+def _timed(name: str, step, log: Path) -> tuple[str, int]:
+    """step() (-> an exit status; None: 0) with its output in the log; the terminal's line for it."""
+    t0, c0 = time.monotonic(), cpu_seconds()
+    with open(log, "a") as out, contextlib.redirect_stdout(out), contextlib.redirect_stderr(out):
+        try:
+            status = step()
+            status = 0 if status is None else int(status)
+        except Exception:  # noqa: BLE001 - named on the terminal, the traceback in the log
+            traceback.print_exc()
+            status = 1
+    return f"== {name}: exit {status} in {time.monotonic() - t0:.1f} s ({cpu_seconds() - c0:.1f} s CPU)", status
+
+
+def _tables(results: Path, out: Path, pairs: list[tuple[str, str]]) -> int:
+    """clem eval's tables (in a forked process) beside `sartco report`; report's exit status, or 1
+    when the tables failed."""
+    import multiprocessing
+
+    from sartco import cli
+    from sartco.clem.tooling.evaluate import evaluate
+
+    receive, send = multiprocessing.get_context("fork").Pipe(duplex=False)
+
+    def write() -> None:
+        evaluate(results, pairs)
+
+    def tables() -> None:
+        send.send(_timed("clem eval's tables (raw.csv, results.csv, results.html)", write, results / LOG))
+
+    process = multiprocessing.get_context("fork").Process(target=tables)
+    process.start()
+    report = _timed("sartco report", lambda: cli.main(["report", "-r", str(results), "--out", str(out)]), results / LOG)
+    line, status = receive.recv() if receive.poll(24 * 3600) else ("== clem eval's tables: no answer", 1)
+    process.join()
+    print(line, flush=True)
+    print(report[0], flush=True)
+    return report[1] if status == 0 else 1
+
+
 def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("-r", "--results", type=Path, default=Path("results"), help="the results folder (results)")
     parser.add_argument("--out", type=Path, default=Path("scores"), help="the tables' folder (scores)")
@@ -208,8 +248,6 @@ def run(args: argparse.Namespace) -> int:
     from sartco import settings
 
     import clemcore.cli  # noqa: F401 - once, before the workers fork
-
-    from sartco.clem.tooling.evaluate import evaluate
 
     data = settings.DATA
     if data is None or not (data / "published").is_dir():
@@ -247,17 +285,7 @@ def run(args: argparse.Namespace) -> int:
         return 1
     merge_run_files(results, tasks)
     shutil.rmtree(results / STAGE)
-    from sartco import cli
-
-    t0, c0 = time.monotonic(), cpu_seconds()
-    with open(results / LOG, "a") as log, contextlib.redirect_stdout(log), contextlib.redirect_stderr(log):
-        evaluate(results, [(t.game, t.model) for t in plays])
-    print(f"== clem eval's tables (raw.csv, results.csv, results.html): done in {time.monotonic() - t0:.1f} s "
-          f"({cpu_seconds() - c0:.1f} s CPU)", flush=True)
-    t0, c0 = time.monotonic(), cpu_seconds()
-    with open(results / LOG, "a") as log, contextlib.redirect_stdout(log), contextlib.redirect_stderr(log):
-        status = cli.main(["report", "-r", str(results), "--out", str(args.out)])
-    print(f"== sartco report: exit {status} in {time.monotonic() - t0:.1f} s ({cpu_seconds() - c0:.1f} s CPU)", flush=True)
+    status = _tables(results, args.out, [(t.game, t.model) for t in plays])
     print(f"== suite: {len(tasks)} tasks in {time.monotonic() - start:.1f} s wall, {cpu_seconds() - cpu:.1f} s CPU "
           f"on {args.workers} processes", flush=True)
     return status
