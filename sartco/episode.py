@@ -29,7 +29,7 @@ ATTEMPTS = "Attempts"
 MAX_ATTEMPTS = "Max Attempts"
 ATTEMPT_CATEGORIES = "Attempt Categories"
 CATEGORY_SEPARATOR = ","  # in Attempt Categories
-# the describe dialogue (sartco.clem.describe.dialogue)
+# the describe dialogue (sartco.games.describe.dialogue)
 CELL_F1_AT_1 = "Cell F1@1"
 CELL_F1_AT_N = "Cell F1@N"
 FIRST_SUCCESS_ROUND = "First Success Round"
@@ -39,12 +39,12 @@ DESCRIBER_WORDS = "Describer Words"
 DIALOGUE_SCORES = (ES_AT_1, ES_AT_N, CELL_F1_AT_1, CELL_F1_AT_N, FIRST_SUCCESS_ROUND, QUESTIONS_ASKED,
                    CORRECTIONS_SENT, DESCRIBER_WORDS)
 ROUND_PREFIX = "ES Round "
-# the describer's instruction (sartco.clem.describe.describer)
+# the describer's instruction (sartco.games.describe.describer)
 DESCRIBER_ANSWERED = "Describer Answered"
 INSTRUCTION_WORDS = "Instruction Words"
 INSTRUCTION_CHARACTERS = "Instruction Characters"
 OBJECT_NAMED = "Object Named"
-# the paper protocol (sartco.clem.paper.game): shares of the dialogue's turns, 0..1
+# the paper protocol (sartco.games.instruct.paper): shares of the dialogue's turns, 0..1
 PAPER_SCORES = {"em": "Paper EM", "cb": "Paper CB", "es": "Paper ES"}
 LEAK_FREE_ES = "Paper ES Leak-free"  # Paper ES with the answer run alone (no gold function in front)
 # function probes (sartco.clem.core.probes): optimal_function and repetition episodes only
@@ -106,7 +106,7 @@ class InstructEpisode(BuildEpisode):
 
 class DescribeEpisode(BuildEpisode):
     """A cobot_describe episode: the describer's prompt, the builder's prompt with a slot for the
-    instruction (sartco.clem.describe.describer.INSTRUCTION_SLOT), what the mock describer writes."""
+    instruction (sartco.games.describe.describer.INSTRUCTION_SLOT), what the mock describer writes."""
     example_ids: list[str]  # ids of the builder prompt's in-context examples
     describer_prompt: str
     builder_prompt: str
@@ -116,7 +116,7 @@ class DescribeEpisode(BuildEpisode):
 
 class PaperProtocolEpisode(PlayedEpisode):
     """A cobot_instruct_paper episode: sartco.paper.episodes.PaperEpisode.to_json() plus the board
-    fields our own build reads (sartco.clem.paper.game.instance_fields)."""
+    fields our own build reads (sartco.games.instruct.paper.instance_fields)."""
     id: str
     file: str              # the published file (stem) of the sample
     sample: str
@@ -153,7 +153,7 @@ class InstructExperiment(Experiment, _Feedback):
     dataset: dict[str, Any]  # the dataset's version, source, seed, path, generator seed, examples
 
 
-# cobot_describe's modes (experiment field `mode`; sartco.clem.describe.dialogue plays them), in report order
+# cobot_describe's modes (experiment field `mode`; sartco.games.describe.dialogue plays them), in report order
 DIALOGUE_MODES = ("oneshot", "clarify", "correct", "clarify_correct")
 
 
@@ -173,7 +173,7 @@ class DescribeExperiment(Experiment, _Dialogue):
 
 
 class PaperExperiment(Experiment):
-    """cobot_instruct_paper's experiments (sartco.clem.paper.game.experiment_fields)."""
+    """cobot_instruct_paper's experiments (sartco.games.instruct.paper.experiment_fields)."""
     protocol: str
     instructions: str
     variant: str

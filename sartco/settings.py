@@ -122,7 +122,7 @@ SANDBOX_INT_BITS = 65_536
 SANDBOX_WALL_TIME = 2.0
 SANDBOX_MEMORY = 512 * 1024 * 1024
 SANDBOX_SOURCE = 100_000
-# An episode (instance and experiment fields; sartco.clem.core.feedback, .probes, sartco.clem.describe.dialogue)
+# An episode (instance and experiment fields; sartco.clem.core.feedback, .probes, sartco.games.describe.dialogue)
 ATTEMPTS = 1                 # builds per episode without feedback (1 = the paper's protocol)
 FEEDBACK_ATTEMPTS = 3        # builds per episode in the feedback experiments (`sartco instances --attempts`)
 PROBES = 8                   # held-out arguments a probed function is called at (instance field `probes`)

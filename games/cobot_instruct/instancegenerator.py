@@ -1,5 +1,6 @@
 """cobot_instruct's instance files: `sartco instances instruct...` with the flags this script always
-took (sartco.instancegen: the modes, one function per file; sartco.instancegen.legacy: the flags).
+took (sartco.games.instruct.instances: one function per file; sartco.instancegen: the modes;
+sartco.instancegen.legacy: the flags).
 
     python games/cobot_instruct/instancegenerator.py     # in/instances.json, instances_ablations.json,
                                                          # instances_feedback.json, instances_smoke.json

@@ -1,6 +1,7 @@
-"""The SARTCo games in clemcore (installed, because clemcore unloads modules that live inside a game
-folder), one package per thing it serves; lower packages never import higher ones
-(tests/architecture/test_layers.py, docs/ARCHITECTURE.md):
+"""What the SARTCo games share in clemcore (installed, because clemcore unloads modules that live
+inside a game folder; each game's own code is its package in sartco.games), one package per thing
+it serves; lower packages never import higher ones (tests/architecture/test_layers.py,
+docs/ARCHITECTURE.md):
 
 - core      the game core any game whose player writes code reuses:
             parsing.parse_code / ParseError (no code -> aborted; answer_lines: what one line is),
@@ -10,14 +11,11 @@ folder), one package per thing it serves; lower packages never import higher one
             feedback.feedback_for / max_attempts, scoring.BuildScorer, probes (function probes),
             card.ScoreCard, transcript.MarkdownTranscript, pictures.attach_all,
             benchmark.BuildBenchmark (checks the instance file up front), provenance (run.json),
-            instance_values (the checked values, the generators' base), episodes.board_fields
+            instance_values (the checked values, the generators' base), episodes.board_fields,
+            instance_files (what both games' instance files share)
 - players   sourced.Builder / SourcedPlayer (a built-in player's answers come from one answer
             source chosen when it is made), answers (Scripted, GoldCode = mock, InstructFollower =
             rulebased), erring (seeded mistakes and repairs, `-m erring`)
-- instruct  cobot_instruct's own: instruct_generator, fresh (fresh test boards), training (the gym env)
-- describe  cobot_describe's own: describer, dialogue (the modes, the turn state machine, the
-            scorer), dialogue_answers (mock and rule-based describer and builder), erring_dialogue
-- paper     game.finish_paper / PaperScorer: the paper protocol (cobot_instruct_paper)
 - tooling   batching (`openai_batching`), rulebased (`-m rulebased`, `-m erring`), stub_server,
             benchrun (`sartco bench-run`), sampling, resume, completeness
 - backends/  the backend files and model entries that `sartco register DIR` writes into DIR,

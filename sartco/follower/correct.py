@@ -12,7 +12,7 @@ of its stack. The cells form lists a bridge in both its cells; `pieces` pairs th
 left cell of a bridge-h, the upper cell of a bridge-v). A piece is kept only if everything below
 it is kept, so a correction can always be carried out in its order on the built board.
 The wording is the template wording of the instructions (resources/templates/instructions/
-simple/correction.j2, rendered by sartco.clem.describe.dialogue): "Remove the blue nut in the 8th row,
+simple/correction.j2, rendered by sartco.games.describe.dialogue): "Remove the blue nut in the 8th row,
 4th column. Place a red washer in the 8th row, 4th column."
 """
 from __future__ import annotations

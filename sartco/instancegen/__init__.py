@@ -1,7 +1,9 @@
 """The instance files of both games, written by one command (`sartco instances MODE`, and the game
 scripts games/*/instancegenerator.py with their old flags): sartco.instancegen.command (modes and
-options), .instruct and .describe (one function per instance file), .common (the generator class,
-writing, the dataset's records), .options (defaults and bounds), .legacy (the scripts' flags).
+options), .options (defaults and bounds), .legacy (the scripts' flags). Each game's files are its own
+package's (sartco.games.instruct.instances, sartco.games.describe.instances: one function per
+instance file), over what both share (sartco.clem.core.instance_files: the generator class,
+writing, the dataset's records).
 
 One convention for every file of both games: game_id counts from 0 in each experiment (an episode
 is its game, experiment and game_id), and experiments are named by sartco.dataset.experiment_name,

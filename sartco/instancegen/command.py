@@ -1,6 +1,6 @@
 """`sartco instances MODE [options]`: the games' instance files (games/<game>/in/) from a dataset,
-one mode per set of files, each file written by its own function (sartco.instancegen.instruct and
-.describe):
+one mode per set of files, each file written by its own function in its game's package
+(sartco.games.instruct.instances, sartco.games.describe.instances):
 
   instruct             cobot_instruct in/instances.json, instances_ablations.json, instances_feedback.json,
                        instances_smoke.json (the committed files)
@@ -23,11 +23,14 @@ import sys
 from pathlib import Path
 
 from sartco.errors import UserError
+from sartco.games.describe import instances as describe
+from sartco.games.instruct import instances as instruct
+from sartco.settings import workspace
 
-from . import describe, instruct
-from .common import GAMES
 from .legacy import parse
 from .options import DEFAULTS, add_option, check
+
+GAMES = workspace() / "games"
 
 
 def _describe_files(options: argparse.Namespace) -> list:

@@ -14,7 +14,7 @@ import sys
 from pathlib import Path
 
 from sartco.clem.core.outcomes import HarnessFault
-from sartco.clem.paper.game import check_turns
+from sartco.games.instruct.paper import check_turns
 from sartco.errors import UserError
 from sartco.paper.vocabulary import PROTOCOL, published_test_files
 from sartco.text import escape

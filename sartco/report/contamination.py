@@ -1,5 +1,5 @@
 """contamination.md / .csv of `sartco report` (issue 24 item 3): a model's ES on the published test
-boards beside its ES on fresh boards (cobot_instruct_fresh, sartco.clem.instruct.fresh).
+boards beside its ES on fresh boards (cobot_instruct_fresh, sartco.games.instruct.fresh).
 
 Like with like: the two experiments of a row share the game, the board kind, the task, the
 instruction source (template: the only source the fresh boards have), the prompt and its in-context

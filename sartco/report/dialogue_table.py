@@ -1,7 +1,7 @@
 """The dialogue table of cobot_describe (`sartco report`): per model pair and experiment, what the
 clarification questions and the corrections did, and ES after round k as a small SVG plot.
 
-Score names (scores.json, written by sartco.clem.describe.dialogue.DialogueScorer):
+Score names (scores.json, written by sartco.games.describe.dialogue.DialogueScorer):
   ES@1, Cell F1@1      after the first build          ES@N, Cell F1@N   after the last build
   ES Round k           the board standing after k corrections (k = 0..R; the last board carries on)
   First Success Round  0 = the first build, k = after the k-th correction (NaN: never)

@@ -13,7 +13,7 @@ A row (the same keys in every row, so Arrow gives every column one type):
               [{"role": "user", "content": <the episode's first turn>}] (TRL's conversational
               "prompt" column)
   turns       the episode's number of turns (1: the function and repetition cells; first_order:
-              one per instruction, the later ones come from the game: sartco.clem.instruct.training)
+              one per instruction, the later ones come from the game: sartco.games.instruct.training)
   experiment, game_id, board_id, task, board_type, object_type, source, split
   episode     the episode as the game holds it (its instance, JSON text): what the scorer needs;
               `sartco.reward.Episodes.from_rows(rows)` reads the episodes back from rows

@@ -8,7 +8,7 @@ completion is TRL's: a text, or the assistant's messages (conversational prompts
 message's content). The rewards are those of sartco.reward.score: "es" (default) or "cell_f1";
 None for a harness_error (the sandbox failed, not the model: TRL leaves it out of the mean).
 Single-turn rows only (`turns == 1`): a completion answers the first turn, and a first_order
-episode of several turns is played through the gym environment (sartco.clem.instruct.training).
+episode of several turns is played through the gym environment (sartco.games.instruct.training).
 
 verl: `compute_score` (verl's `custom_reward_function`, one answer a call: NaiveRewardManager) and
 `compute_score_batch` (reward_manager "batch": one sandbox batch a call), below.

@@ -22,11 +22,11 @@ LAYERS = [
     ("scores", ["sartco.scores"]),
     ("paper", ["sartco.paper"]),
     ("register", ["sartco.register"]),
-    # sartco.clem: one package per thing it serves (sartco/clem/__init__.py); the games' own logic
-    # packages share a rank, so none of them imports another
+    # sartco.clem: one package per thing it serves (sartco/clem/__init__.py); the games (sartco/games:
+    # one package per game, all of its own code) share a rank, so neither imports the other
     ("clem core", ["sartco.clem.core"]),
     ("clem players", ["sartco.clem.players"]),
-    ("clem games", ["sartco.clem.instruct", "sartco.clem.describe", "sartco.clem.paper"]),
+    ("games", ["sartco.games.instruct", "sartco.games.describe"]),
     ("clem tooling", ["sartco.clem.tooling"]),
     # the files clemcore loads by path (backends/<name>_api.py; `sartco register` copies them)
     ("clem backends", ["sartco.clem.backends"]),
@@ -37,6 +37,7 @@ LAYERS = [
 ]
 TOP = len(LAYERS) - 1  # the entry points may use each other (the `sartco` command dispatches to them)
 RANK = {package: rank for rank, (_, packages) in enumerate(LAYERS) for package in packages}
+CONTAINERS = ("sartco", "sartco.clem", "sartco.games")  # folders of packages: no layer of their own
 
 
 def package_of(module: str) -> str:
@@ -45,7 +46,7 @@ def package_of(module: str) -> str:
     for n in range(len(parts), 0, -1):
         if ".".join(parts[:n]) in RANK:
             return ".".join(parts[:n])
-    if module in ("sartco", "sartco.__init__", "sartco.clem", "sartco.clem.__init__"):
+    if module.removesuffix(".__init__") in CONTAINERS:
         return "sartco.__init__"  # the containers: their __init__ holds no code (test_containers_hold_no_code)
     raise AssertionError(f"module {module} belongs to no layer of tests/architecture/test_layers.py")
 
@@ -137,14 +138,16 @@ def test_every_module_has_a_layer():
         package_of(module)
 
 
-def test_containers_hold_no_code():
-    """sartco/clem is only its packages: its __init__ is a docstring, and `from sartco.clem import x`
-    (a module by the container's name, which no layer would check) appears nowhere."""
-    tree = ast.parse((ROOT / "sartco/clem/__init__.py").read_text(encoding="utf-8"))
+@pytest.mark.parametrize("container", ["sartco.clem", "sartco.games"])
+def test_containers_hold_no_code(container):
+    """sartco/clem and sartco/games are only their packages: the __init__ is a docstring, and
+    `from sartco.clem import x` (a module by the container's name, which no layer would check)
+    appears nowhere."""
+    tree = ast.parse((ROOT / container.replace(".", "/") / "__init__.py").read_text(encoding="utf-8"))
     assert all(isinstance(node, ast.Expr) and isinstance(node.value, ast.Constant) for node in tree.body)
     bare = [f"{module}: line {line}" for module, targets in import_graph().items()
-            for name, line in targets.items() if name == "sartco.clem.__init__"]
-    assert not bare, "imports of the container sartco.clem (name the package):\n" + "\n".join(bare)
+            for name, line in targets.items() if name == f"{container}.__init__"]
+    assert not bare, f"imports of the container {container} (name the package):\n" + "\n".join(bare)
 
 
 def test_imports_point_down():

@@ -1,4 +1,4 @@
-"""The erring players (sartco.clem.players.erring, sartco.clem.describe.erring_dialogue): their figures for the
+"""The erring players (sartco.clem.players.erring, sartco.games.describe.erring_dialogue): their figures for the
 player seed 42 on a fixed slice, every kind of slip, and repairs that move toward the target."""
 from __future__ import annotations
 
@@ -8,8 +8,8 @@ from collections import Counter
 import pytest
 
 from play_helpers import GAMES, play
-from sartco.clem.describe.erring_dialogue import ErringDescriber, sentences
-from sartco.clem.describe.turns import Dialogue, DialogueLog
+from sartco.games.describe.erring_dialogue import ErringDescriber, sentences
+from sartco.games.describe.turns import Dialogue, DialogueLog
 from sartco.clem.players.answers import InstructFollower
 from sartco.clem.players.erring import KINDS, SEED, ErringFollower, Slip, rng_for, slip_arrangement, slip_steps
 from sartco.follower import FollowError

@@ -1,5 +1,5 @@
 """SARTCo as a training environment: the train split instance file and clemcore's gym env over
-it (sartco.clem.instruct.training), driven by a scripted policy: observations, rewards, info, episode ends."""
+it (sartco.games.instruct.training), driven by a scripted policy: observations, rewards, info, episode ends."""
 import json
 from argparse import Namespace
 from pathlib import Path
@@ -8,7 +8,7 @@ import pytest
 
 from play_helpers import REPO
 from sartco.clem.core.building import CONTEXT_KEY
-from sartco.clem.instruct.training import gym_env
+from sartco.games.instruct.training import gym_env
 from sartco.instancegen.command import generate
 from sartco.instancegen.options import DEFAULTS
 

@@ -14,8 +14,7 @@ import pytest
 
 from play_helpers import clem
 from sartco.cli import main as sartco_main
-from sartco.instancegen.common import InstanceFile
-from sartco.instancegen.instruct import described
+from sartco.games.instruct.instances import InstructFile, described
 
 REPO = Path(__file__).resolve().parents[2]
 SLICE = REPO / "games" / "cobot_describe" / "in" / "instances_slice.json"
@@ -138,7 +137,7 @@ def test_round_trip_into_cobot_instruct(describe_run, tmp_path, play_episodes):
     assert manifest["config"]["instruction_sources"] == {"mock": 6} and manifest["defects"] == []
     assert manifest["files"] == {"simple_simple_test.json": 2, "regular_simple_test.json": 2,
                                  "regular_complex_test.json": 2}
-    generator = InstanceFile(REPO / "games" / "cobot_instruct", described)  # `sartco instances instruct-describers`
+    generator = InstructFile(REPO / "games" / "cobot_instruct", described)  # `sartco instances instruct-describers`
     generator.on_generate(seed=42, dataset_dir=REPO / "instances" / "v1", n_examples=5, describers_dir=out)
     experiments = generator.instances["experiments"]
     assert [e["name"] for e in experiments] == ["sb_so_optimal_function_mock", "rb_so_repetition_mock",

@@ -13,7 +13,7 @@ import pytest
 
 from play_helpers import REPO, clem, fence
 from sartco.cli import main as sartco_main
-from sartco.clem.describe.dialogue import settings_of
+from sartco.games.describe.dialogue import settings_of
 from sartco.follower import emit
 from sartco.follower.correct import pieces
 from sartco.world import COLORS

@@ -6,7 +6,7 @@ import json
 import pytest
 
 from sartco.clem.core.transcript import display
-from sartco.clem.paper.game import experiment_fields, instance_fields
+from sartco.games.instruct.paper import experiment_fields, instance_fields
 from sartco.clem.tooling.completeness import INCOMPLETE_STATUS
 from sartco.dataset import SHARED_DATA as DEFAULT_DATA
 
@@ -162,11 +162,10 @@ def test_report_flags_a_run_with_other_generation_settings(paper_episodes, play_
 def test_the_generator_makes_one_experiment_per_cell_with_the_papers_settings():
     from pathlib import Path
 
-    from sartco.instancegen.common import InstanceFile
-    from sartco.instancegen.instruct import paper
+    from sartco.games.instruct.instances import InstructFile, paper
 
     GAME_DIR = Path(__file__).resolve().parents[2] / "games" / "cobot_instruct"
-    gen = InstanceFile(GAME_DIR, paper)
+    gen = InstructFile(GAME_DIR, paper)
     gen.on_generate(42, dataset_dir=GAME_DIR.parents[1] / "instances" / "v1")  # in memory: nothing written
     exps = {e["name"]: e for e in gen.instances["experiments"]}
     table3 = json.loads((DEFAULT_DATA / "paper-protocol" / "table3.json").read_text())

@@ -10,7 +10,7 @@ import pytest
 from play_helpers import clem, fence, play, scripted_episode
 from test_transcript import browse, chromium
 
-from sartco.clem.paper.game import instance_fields, experiment_fields
+from sartco.games.instruct.paper import instance_fields, experiment_fields
 from sartco.dataset import SHARED_DATA
 
 # every piece of markup carries an id "pwned..." or a javascript: URL, so the DOM shows whether it became an element

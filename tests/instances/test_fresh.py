@@ -1,4 +1,4 @@
-"""Fresh test boards (sartco.instances.fresh, sartco.clem.instruct.fresh): disjoint from the published data
+"""Fresh test boards (sartco.instances.fresh, sartco.games.instruct.fresh): disjoint from the published data
 and the seed-42 dataset, with the published test set's distribution, reproducible."""
 from __future__ import annotations
 
@@ -6,7 +6,7 @@ import json
 
 import pytest
 
-from sartco.clem.instruct.fresh import FreshInstanceGenerator
+from sartco.games.instruct.fresh import FreshInstanceGenerator
 from sartco.dataset import REGULAR_COMPLEX, SIMPLE
 from sartco.instances.config import load_config
 from sartco.instances.fresh import board_key, board_keys, fresh_boards, marginals, total_variation

@@ -61,7 +61,7 @@ def test_every_default_budget_is_the_settings_one():
 
     from sartco.clem.core.feedback import max_attempts
     from sartco.clem.core.probes import DEFAULT_PROBES
-    from sartco.clem.describe.dialogue import settings_of
+    from sartco.games.describe.dialogue import settings_of
     from sartco.clem.tooling.batching import DEFAULTS
     from sartco.instancegen.options import DEFAULTS as GENERATION
     from sartco.program.execution import Limits

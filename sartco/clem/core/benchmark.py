@@ -3,9 +3,10 @@ master its scorer (`scorer_class`: the master also runs it for the transcript's 
 sartco.clem.core.card); scoring also writes the full-size board pictures the transcripts link to
 (sartco.clem.core.pictures).
 
-clemcore plays the one GameBenchmark subclass it finds among a master.py's module members, so
-BuildBenchmark is a base beside GameBenchmark, not a subclass of it: a master.py imports it by
-name and names both bases.
+clemcore plays the one GameBenchmark subclass it finds among a games/<game>/master.py's module
+members, so BuildBenchmark is a base beside GameBenchmark, not a subclass of it: a game's master
+module (sartco.games.<game>.master) imports it by name and names both bases, and
+games/<game>/master.py imports only the game's benchmark.
 
     from pathlib import Path
 

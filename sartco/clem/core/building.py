@@ -248,7 +248,7 @@ def record_build(game_master, attempts: list[BuildRecord], *, final: bool, shown
     its function (with the episode's `instance`, sartco.clem.core.probes), move the game state to
     the outcome of the attempts (or, for the paper protocol, to the `share` of turns that succeeded)
     and hand ES, cell F1, category and puts to clemcore's step info (what a gym env's `info` and
-    reward function see, sartco.clem.instruct.training) and, under CONTEXT_KEY, to every player's
+    reward function see, sartco.games.instruct.training) and, under CONTEXT_KEY, to every player's
     context (the observation at the episode's end, also over `clem serve`; its text unchanged)."""
     from .probes import log_probes
 

@@ -156,7 +156,7 @@ def card_recorder(game_name: str, experiment_name: str, game_id) -> GameInteract
 class ScoreCard:
     """First base of a game master: logs the score card when the episode ends. The game master
     class names its scorer in `scorer_class` (the benchmark scores with the same class)."""
-    scorer_class = None
+    scorer_class: type | None = None
 
     def setup(self, **instance):
         super().setup(**instance)

@@ -1,17 +1,17 @@
 """The fields of a game episode that come from one board record and a task, the same in every
-game that ends in a build (the game's instance generator adds its prompts and turns):
+game that ends in a build (the game's instance generator adds its prompts and turns:
+sartco.games.instruct.episodes, sartco.games.describe.instances):
 
     board_fields(record, task) -> {board_id, board_type, object_type, combo_name, task, rows, cols,
                                    target, given_code, gold_code}
-    instruct_episode(record, task, source, examples, sections) -> a cobot_instruct episode
 
 given_code: the code the program starts with (repetition: the given object function);
 gold_code: the gold answer in the task's style (exact match and CodeBLEU compare with it).
 """
 from __future__ import annotations
 
-from sartco.episode import BuildEpisode, InstructEpisode
-from sartco.instances.prompts import SECTIONS, builder_prompt, builder_turn, gold_code, instruction_text
+from sartco.episode import BuildEpisode
+from sartco.instances.prompts import gold_code
 
 
 def board_fields(record: dict, task: str) -> BuildEpisode:
@@ -24,20 +24,3 @@ def board_fields(record: dict, task: str) -> BuildEpisode:
         "gold_code": gold_code(record, task),
     }
 
-
-def instruct_episode(record: dict, task: str, source: str, examples: list[dict], sections=SECTIONS) -> InstructEpisode:
-    """One cobot_instruct game instance: the board's fields, what the builder is told (the prompt
-    with `examples` and `sections`; multi-turn: one message per later step), and what `mock`
-    answers per turn."""
-    code = record["code"]
-    if task == "first_order":
-        steps = instruction_text(record, task, source)
-        turns = [builder_prompt(record, task, examples, sections, source, step=0)]
-        turns += [builder_turn(record, k, source) for k in range(1, len(steps))]
-        instructions, gold_turns = list(steps), list(code["first_order"]["steps"])
-    else:
-        turns = [builder_prompt(record, task, examples, sections, source)]
-        instructions = [instruction_text(record, task, source)]
-        gold_turns = [gold_code(record, task)]
-    return {**board_fields(record, task), "source": source, "turns": turns, "instructions": instructions,
-            "gold_turns": gold_turns, "examples": [ex["id"] for ex in examples]}

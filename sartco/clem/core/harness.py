@@ -3,7 +3,7 @@
 A harness fault is anything the model did not cause: the model server gave no answer (the
 backend's retries given up: a `NoAnswer`, sartco.clem.tooling.batching), the sandbox could not run the
 program or gave no usable answer (ErrorCode.HARNESS_ERROR from sartco.program, raised as HarnessFault by
-sartco.clem.core.building.build_for and sartco.clem.paper.game.finish_paper), or the game master or the
+sartco.clem.core.building.build_for and sartco.games.instruct.paper.finish_paper), or the game master or the
 scorer raised. Such an episode is recorded with its reason and counts as not played:
 - playing (`HarnessGuard`, the first base of both game masters): an exception in a step ends the
   episode at once with a `harness_error` build record (its reason as the message) under

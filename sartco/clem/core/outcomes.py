@@ -9,7 +9,7 @@
 Feedback (repair) experiments, several attempts: the last attempt decides, except that a last
 attempt without code loses (the builder did play) unless no attempt held code at all (aborted,
 as in the paper's protocol) - `outcome_of_attempts`; a harness fault in any attempt aborts.
-The paper protocol (sartco.clem.paper.game) never aborts: its episode succeeds when every turn's ES
+The paper protocol (sartco.games.instruct.paper) never aborts: its episode succeeds when every turn's ES
 does (`set_share_outcome`).
 Games call `set_attempts_outcome` or `set_share_outcome` (both through
 sartco.clem.core.building.record_build), and `log_outcome`; nothing else maps codes to outcomes.

@@ -17,7 +17,7 @@ with one chance per piece of the object.
 Repair: after execution feedback (cobot_instruct, field `attempts`) the builder fixes the first of
 its remaining slips and each other one with probability FIX (1/2), then writes the whole program
 again; the describe game's builder carries out a describer's correction it can read, slipping
-again at the rate p on the pieces it adds (sartco.clem.describe.erring_dialogue).
+again at the rate p on the pieces it adds (sartco.games.describe.erring_dialogue).
 
 Seeding: every draw comes from random.Random("SEED:board_id:game_id:task:purpose:round") (SEED =
 42, the player seed; str seeds hash the same in every process), so a run is byte-identical to

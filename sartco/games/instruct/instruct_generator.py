@@ -1,15 +1,16 @@
-"""The base of cobot_instruct's instance generators (sartco.instancegen.instruct and
-sartco.clem.instruct.fresh): one experiment per cell, with or without execution feedback, named by
+"""The base of cobot_instruct's instance generators (sartco.games.instruct.instances and
+sartco.games.instruct.fresh): one experiment per cell, with or without execution feedback, named by
 sartco.dataset.experiment_name, and its episodes from board records, each with its in-context
 examples, game_id counted from 0 in each experiment."""
 from __future__ import annotations
 
-from sartco.clem.core.episodes import instruct_episode
 from sartco.clem.core.instance_values import InstanceGenerator
 from sartco.dataset import BoardKind, experiment_name
 from sartco.episode import InstructExperiment
 from sartco.instances.examples import select_examples
 from sartco.instances.prompts import SECTIONS
+
+from .episodes import instruct_episode
 
 FEEDBACK = "feedback"           # the variant of the feedback experiments: <cell>_<task>_<source>_feedback
 FEEDBACK_SUFFIX = f"_{FEEDBACK}"  # and of their files: instances_feedback.json

@@ -23,7 +23,7 @@ What a step gives (clemcore's GameMasterEnv; observation = the builder's context
           "outcome"  clemcore's default: 1 success, 0 lost, -1 aborted (no code found).
   done    when the episode ends (after the last instruction's answer, or the last attempt).
 
-    from sartco.clem.instruct.training import gym_env
+    from sartco.games.instruct.training import gym_env
     env = gym_env(reward="cell_f1")           # cobot_instruct, in/instances_train.json
     observation, info = env.reset()
     observation, reward, done, truncated, info = env.step(answer)

@@ -9,10 +9,10 @@ sartco.clem.players.sourced.AnswerSource), chosen once when the players are made
                     cannot read the instruction (there is no gold answer for instructions written
                     during the game)
 - ErringDescriber / ErringBuilder   `erring`: the same with seeded omissions, garbles and slips
-                    (sartco.clem.describe.erring_dialogue)
+                    (sartco.games.describe.erring_dialogue)
 - describer_answers / builder_answers   the choice, with the episode's `describer_script` /
   `builder_script` answered first (scripted tests; `rulebased` as builder ignores the script)
-Both read what they heard from the episode's Dialogue record (sartco.clem.describe.dialogue), which the game
+Both read what they heard from the episode's Dialogue record (sartco.games.describe.dialogue), which the game
 master writes; neither asks the game master for an answer.
 """
 from __future__ import annotations

@@ -15,7 +15,7 @@ name, so its results, and clem eval's clemscore, never mix with the others):
                             from the imported published data (`sartco import ../shared/sartco-data/published
                             --out instances/published`): the human- and model-written cells of Table 3;
   instances_published_feedback.json  cobot_instruct_published_feedback (gitignored);
-  instances_train.json      the train split, for training (sartco.clem.instruct.training): one experiment per
+  instances_train.json      the train split, for training (sartco.games.instruct.training): one experiment per
                             cell, `<cell>_train`, over the first --train-episodes train boards (0: all);
                             the examples from the same pool, never the episode's own board;
   instances_describers.json from a `sartco import-instructions` dataset: one experiment per
@@ -25,7 +25,7 @@ name, so its results, and clem eval's clemscore, never mix with the others):
                             named paper_<cell>_<task>_<source>, each recording protocol "paper", its
                             variant, where its examples came from and the paper's generation settings
                             (temperature 0, 250 tokens: `clem run -t 0 -l 250`);
-  instances_fresh.json      cobot_instruct_fresh (gitignored; sartco.clem.instruct.fresh): each template
+  instances_fresh.json      cobot_instruct_fresh (gitignored; sartco.games.instruct.fresh): each template
                             cell's published test boards beside as many fresh boards of a seed.
 
 Experiment names (sartco.dataset.experiment_name, the one rule of both games):
@@ -42,9 +42,9 @@ from __future__ import annotations
 import os
 from argparse import Namespace
 from pathlib import Path
+from typing import Callable
 
-from sartco.clem.instruct.fresh import DEFAULT_PUBLISHED, FreshInstanceGenerator
-from sartco.clem.instruct.instruct_generator import FEEDBACK_SUFFIX
+from sartco.clem.core.instance_files import records, written
 from sartco.dataset import (BOARD_KINDS, DESCRIBED_TASK, REGULAR_COMPLEX, REGULAR_SIMPLE, SIMPLE, board_kind,
                             experiment_name)
 from sartco.errors import UserError
@@ -53,7 +53,8 @@ from sartco.instances.prompts import SECTIONS
 from sartco.instances.storage import load_dataset
 from sartco.settings import workspace
 
-from .common import InstanceFile, dataset_info, records, write
+from .fresh import DEFAULT_PUBLISHED, FreshInstanceGenerator
+from .instruct_generator import FEEDBACK_SUFFIX, InstructGenerator
 
 # the cells of the paper's Table 3: (board kind, task, sources from the generated data, from the published data)
 CELLS = [
@@ -65,7 +66,36 @@ CELLS = [
 ]
 
 
-def _generated(gen: InstanceFile, seed: int, dataset_dir: Path, n_examples: int):
+class InstructFile(InstructGenerator):
+    """One cobot_instruct instance file: on_generate runs the file's build function (table3,
+    ablations, train, published, described, paper), which fills `instances` (through experiment /
+    add_episodes / add_experiment / add_game_instance) and sets `source`, the input an error line
+    names when no episode came out of it."""
+
+    def __init__(self, game_dir: str | Path, build: Callable, feedback_attempts: int | None = None):
+        super().__init__(str(game_dir), feedback_attempts)
+        self.build = build
+
+    def on_generate(self, seed: int, **kwargs):
+        self.build(self, seed, **kwargs)
+
+
+def write(gen: InstructGenerator, name: str, seed: int, **kwargs) -> str:
+    """Write in/<name> of the game folder (say what it holds)."""
+    return written(gen, gen.generate(name, seed=seed, **kwargs))
+
+
+def dataset_info(manifest: dict, path: Path, seed: int, n_examples: int, examples_from: dict | None = None) -> dict:
+    """What a cobot_instruct instance file records about its dataset (examples_from: the dataset
+    of the in-context examples when it is another one)."""
+    info = {"version": manifest["version"], "source": manifest["source"], "seed": manifest.get("seed"),
+            "path": os.path.relpath(path, workspace())}
+    if examples_from is not None:
+        info["examples_from"] = examples_from
+    return {**info, "generator_seed": seed, "n_examples": n_examples}
+
+
+def _generated(gen: InstructFile, seed: int, dataset_dir: Path, n_examples: int):
     """The generated dataset's files, the train pools of the in-context examples, and the
     dataset as the file records it (the file's `dataset` until a build names another one)."""
     manifest, files = load_dataset(dataset_dir)
@@ -73,7 +103,7 @@ def _generated(gen: InstanceFile, seed: int, dataset_dir: Path, n_examples: int)
     return files, {kind: records(dataset_dir, files, kind, "train") for kind in BOARD_KINDS}, info
 
 
-def table3(gen: InstanceFile, seed: int, dataset_dir: Path, n_examples: int, per_experiment: int | None = None):
+def table3(gen: InstructFile, seed: int, dataset_dir: Path, n_examples: int, per_experiment: int | None = None):
     """The template cells of Table 3 (test split; per_experiment: the first N episodes of each)."""
     gen.source = dataset_dir
     files, pools, info = _generated(gen, seed, dataset_dir, n_examples)
@@ -84,7 +114,7 @@ def table3(gen: InstanceFile, seed: int, dataset_dir: Path, n_examples: int, per
             gen.add_episodes(exp, items, task, source, pools[kind], seed, n_examples)
 
 
-def ablations(gen: InstanceFile, seed: int, dataset_dir: Path, n_examples: int, episodes: int):
+def ablations(gen: InstructFile, seed: int, dataset_dir: Path, n_examples: int, episodes: int):
     """Every template cell on the first `episodes` val boards: 0..MAX_EXAMPLES examples, and each
     prompt section left out."""
     gen.source = dataset_dir
@@ -102,7 +132,7 @@ def ablations(gen: InstanceFile, seed: int, dataset_dir: Path, n_examples: int, 
             gen.add_episodes(exp, val, task, "template", pools[kind], seed, n_examples, kept)
 
 
-def train(gen: InstanceFile, seed: int, dataset_dir: Path, n_examples: int, episodes: int):
+def train(gen: InstructFile, seed: int, dataset_dir: Path, n_examples: int, episodes: int):
     """Every template cell on the first `episodes` train boards (0: all)."""
     gen.source = dataset_dir
     _, pools, info = _generated(gen, seed, dataset_dir, n_examples)
@@ -111,7 +141,7 @@ def train(gen: InstanceFile, seed: int, dataset_dir: Path, n_examples: int, epis
         gen.add_episodes(exp, pools[kind][:episodes or None], task, "template", pools[kind], seed, n_examples)
 
 
-def published(gen: InstanceFile, seed: int, dataset_dir: Path, n_examples: int, published_dir: Path):
+def published(gen: InstructFile, seed: int, dataset_dir: Path, n_examples: int, published_dir: Path):
     """The human- and model-written cells of Table 3 from the imported published data."""
     gen.source = published_dir
     _, pools, info = _generated(gen, seed, dataset_dir, n_examples)
@@ -125,7 +155,7 @@ def published(gen: InstanceFile, seed: int, dataset_dir: Path, n_examples: int, 
             gen.add_episodes(exp, items, task, source, pools[kind], seed, n_examples)
 
 
-def described(gen: InstanceFile, seed: int, dataset_dir: Path, n_examples: int, describers_dir: Path):
+def described(gen: InstructFile, seed: int, dataset_dir: Path, n_examples: int, describers_dir: Path):
     """One experiment per describer model (an instruction source of the manifest) and board kind,
     named <cell>_<task>_<model>, with the builder task cobot_describe gives (DESCRIBED_TASK)."""
     gen.source = describers_dir
@@ -150,11 +180,11 @@ def described(gen: InstanceFile, seed: int, dataset_dir: Path, n_examples: int, 
                 gen.add_episodes(exp, items, task, source, pools[kind], seed, n_examples)
 
 
-def paper(gen: InstanceFile, seed: int, dataset_dir: Path, published_dir: Path | None = None):
+def paper(gen: InstructFile, seed: int, dataset_dir: Path, published_dir: Path | None = None):
     """The paper protocol (sartco.paper.episodes.build_episodes) on the published test files (from
     ../shared), one experiment per Table 3 cell, paper_<cell>_<task>_<source>. seed: unused (the
     paper's examples have their own)."""
-    from sartco.clem.paper.game import experiment_fields, instance_fields
+    from .paper import experiment_fields, instance_fields
     from sartco.paper import PROTOCOL
     from sartco.paper import episodes as paper_episodes
 
@@ -176,47 +206,47 @@ def paper(gen: InstanceFile, seed: int, dataset_dir: Path, published_dir: Path |
 
 # one function per file: (options, game folder) -> the path written
 def instances(options: Namespace, game_dir: Path) -> str:
-    return write(InstanceFile(game_dir, table3), "instances.json", options.seed, dataset_dir=options.dataset,
+    return write(InstructFile(game_dir, table3), "instances.json", options.seed, dataset_dir=options.dataset,
                  n_examples=options.examples)
 
 
 def instances_ablations(options: Namespace, game_dir: Path) -> str:
-    return write(InstanceFile(game_dir, ablations), "instances_ablations.json", options.seed, dataset_dir=options.dataset,
+    return write(InstructFile(game_dir, ablations), "instances_ablations.json", options.seed, dataset_dir=options.dataset,
                  n_examples=options.examples, episodes=options.ablation_episodes)
 
 
 def instances_feedback(options: Namespace, game_dir: Path) -> str:
-    return write(InstanceFile(game_dir, table3, options.attempts), f"instances{FEEDBACK_SUFFIX}.json", options.seed,
+    return write(InstructFile(game_dir, table3, options.attempts), f"instances{FEEDBACK_SUFFIX}.json", options.seed,
                  dataset_dir=options.dataset, n_examples=options.examples)
 
 
 def instances_smoke(options: Namespace, game_dir: Path) -> str:
-    return write(InstanceFile(game_dir, table3), "instances_smoke.json", options.seed, dataset_dir=options.dataset,
+    return write(InstructFile(game_dir, table3), "instances_smoke.json", options.seed, dataset_dir=options.dataset,
                  n_examples=options.examples, per_experiment=options.smoke)
 
 
 def instances_published(options: Namespace, game_dir: Path) -> str:
-    return write(InstanceFile(game_dir, published), "instances_published.json", options.seed, dataset_dir=options.dataset,
+    return write(InstructFile(game_dir, published), "instances_published.json", options.seed, dataset_dir=options.dataset,
                  n_examples=options.examples, published_dir=options.published or DEFAULT_PUBLISHED)
 
 
 def instances_published_feedback(options: Namespace, game_dir: Path) -> str:
-    return write(InstanceFile(game_dir, published, options.attempts), f"instances_published{FEEDBACK_SUFFIX}.json",
+    return write(InstructFile(game_dir, published, options.attempts), f"instances_published{FEEDBACK_SUFFIX}.json",
                  options.seed, dataset_dir=options.dataset, n_examples=options.examples, published_dir=options.published or DEFAULT_PUBLISHED)
 
 
 def instances_train(options: Namespace, game_dir: Path) -> str:
-    return write(InstanceFile(game_dir, train), "instances_train.json", options.seed, dataset_dir=options.dataset,
+    return write(InstructFile(game_dir, train), "instances_train.json", options.seed, dataset_dir=options.dataset,
                  n_examples=options.examples, episodes=options.train_episodes)
 
 
 def instances_describers(options: Namespace, game_dir: Path) -> str:
-    return write(InstanceFile(game_dir, described), "instances_describers.json", options.seed, dataset_dir=options.dataset,
+    return write(InstructFile(game_dir, described), "instances_describers.json", options.seed, dataset_dir=options.dataset,
                  n_examples=options.examples, describers_dir=options.describers)
 
 
 def instances_paper(options: Namespace, game_dir: Path) -> str:
-    return write(InstanceFile(game_dir, paper), "instances_paper.json", options.seed, dataset_dir=options.dataset,
+    return write(InstructFile(game_dir, paper), "instances_paper.json", options.seed, dataset_dir=options.dataset,
                  published_dir=options.paper_data)
 
 

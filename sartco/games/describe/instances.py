@@ -12,12 +12,12 @@ with --examples in-context examples from the dataset's train split (select_examp
 --seed); the instruction slot is filled during the game with what the describer wrote. The file
 records the dataset version and seed (`dataset`) and the generator's seed (`seed`).
 
-Each board kind is played in every mode of sartco.clem.describe.dialogue.MODES: `oneshot` (the three
+Each board kind is played in every mode of sartco.games.describe.dialogue.MODES: `oneshot` (the three
 experiments above, no variant) in in/instances.json, the game entry `cobot_describe` (the paper's
 one-shot game: its clemscore means that alone), and the mode as the variant, `<name>_clarify`,
 `<name>_correct`, `<name>_clarify_correct` (experiment fields `mode`, `questions` K = --questions,
 `corrections` R = --corrections; the same boards and prompts, the builder's prompt of a clarify
-mode ends with the paragraph on questions, sartco.clem.describe.dialogue.clarify_note) in
+mode ends with the paragraph on questions, sartco.games.describe.dialogue.clarify_note) in
 in/instances_dialogue.json, the entry `cobot_describe_dialogue`. game_id counts from 0 in each
 experiment, as in every instance file: an episode is (game, experiment, game_id), and the same
 board has the same game_id in every mode.
@@ -31,23 +31,24 @@ from __future__ import annotations
 from argparse import Namespace
 from pathlib import Path
 
-from sartco.clem.describe.describer import INSTRUCTION_SLOT
-from sartco.clem.describe.dialogue import MODES, clarify_note
 from sartco.clem.core.episodes import board_fields
+from sartco.clem.core.instance_files import records, spread, written
+from sartco.clem.core.instance_values import InstanceGenerator
 from sartco.dataset import BOARD_KINDS, DESCRIBED_TASK, experiment_name
 from sartco.episode import DescribeEpisode, DescribeExperiment
 from sartco.instances.examples import select_examples
 from sartco.instances.prompts import builder_prompt, describer_prompt, instruction_text
 from sartco.instances.storage import load_dataset
 
-from .common import InstanceFile, records, spread, write
+from .describer import INSTRUCTION_SLOT
+from .dialogue import MODES, clarify_note
 
 ONESHOT = ("oneshot",)
 DIALOGUE = tuple(m for m in MODES if m != "oneshot")
 SOURCE = "describer"  # who writes the builder's instructions
 
 
-def modes_file(gen: InstanceFile, seed: int, dataset: Path, examples: int, per_experiment: int | None,
+def modes_file(gen: InstanceGenerator, seed: int, dataset: Path, examples: int, per_experiment: int | None,
                questions: int, corrections: int, modes: tuple[str, ...]):
     """The experiments of `modes` (ONESHOT or DIALOGUE), game_id counted from 0 in each."""
     gen.source = dataset
@@ -79,9 +80,18 @@ def modes_file(gen: InstanceFile, seed: int, dataset: Path, examples: int, per_e
                     template_instruction=instruction_text(record, task, "template"), record=record))
 
 
+class DescribeFile(InstanceGenerator):
+    """One cobot_describe instance file: the experiments of modes_file."""
+
+    def on_generate(self, seed: int, **kwargs):
+        modes_file(self, seed, **kwargs)
+
+
 def _write(options: Namespace, game_dir: Path, name: str, modes: tuple[str, ...], per_experiment: int | None) -> str:
-    return write(InstanceFile(game_dir, modes_file), name, options.seed, dataset=options.dataset, examples=options.examples,
-                 per_experiment=per_experiment, questions=options.questions, corrections=options.corrections, modes=modes)
+    gen = DescribeFile(str(game_dir))
+    return written(gen, gen.generate(name, seed=options.seed, dataset=options.dataset, examples=options.examples,
+                                     per_experiment=per_experiment, questions=options.questions,
+                                     corrections=options.corrections, modes=modes))
 
 
 # one function per file: (options, game folder) -> the path written
