@@ -5,6 +5,7 @@ resumes in a row and after a harness-error episode left unscored; run.json recor
 to repeat the run and is rewritten as episodes are played; `sartco report` prints the settings its
 numbers come from."""
 import json
+from importlib import metadata
 import os
 import shutil
 import signal
@@ -91,6 +92,8 @@ def test_resume_of_one_experiment_plays_it_alone_with_the_runs_settings(tmp_path
     assert all(run["packages"].values()) and run["python"]["version"].count(".") == 2
     assert run["seeds"] == {"erring_players": 42, "erring_slip_rate": 0.3, "erring_fix_rate": 0.5, "function_probes": 0}
     assert run["instance_file"]["generated"]["dataset"]["generator_seed"] == 42
+    assert run["instance_file"]["generated"]["generator"] == {"package": "sartco-bench",
+                                                              "version": metadata.version("sartco-bench")}
     assert run["instance_file"]["generated"]["dataset_manifest"]["path"] == "instances/v1/manifest.json"
 
     report = sartco("report", "-r", tmp_path / "results", "--out", tmp_path / "scores")

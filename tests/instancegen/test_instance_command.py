@@ -7,6 +7,7 @@ from __future__ import annotations
 import ast
 import importlib.util
 import json
+from importlib import metadata
 import shutil
 from argparse import Namespace
 from pathlib import Path
@@ -167,6 +168,14 @@ def test_every_committed_file_keeps_the_one_convention(game, name):
         assert e["name"] == experiment_name(kind, e["task"], e["source"], variant, feedback)
         assert e.get("feedback_of") in (None, experiment_name(kind, e["task"], e["source"], variant))
         assert [i["game_id"] for i in e["game_instances"]] == list(range(len(e["game_instances"])))
+
+
+@pytest.mark.parametrize("game, name", COMMITTED)
+def test_every_committed_file_says_which_release_wrote_it(game, name):
+    """Issue 33: an instance file records its generator (the release, not the commit: the same seed
+    and config give the same bytes on every commit of a release); run.json copies it."""
+    data = json.loads((REPO / "games" / game / "in" / f"{name}.json").read_text())
+    assert data["generator"] == {"package": "sartco-bench", "version": metadata.version("sartco-bench")}
 
 
 def test_the_naming_rule():

@@ -4,17 +4,33 @@ the line that says what a written file holds. Each game writes its files itself 
 `generate`, which calls its own on_generate), so nothing here calls back into a game.
 
     written(gen, path) -> path            one line: the file, its experiments and episodes
+    stamp(gen)                            the file's `generator` field: which release wrote it
     records(folder, files, kind, split)   one split's records (UserError if missing)
     spread(items, n)                      n items evenly spread (cobot_describe's slices)
 """
 from __future__ import annotations
 
+from importlib import metadata
 from pathlib import Path
 
 from clemcore.clemgame import GameInstanceGenerator
 
 from sartco.dataset import BoardKind
 from sartco.errors import UserError
+
+
+PACKAGE = "sartco-bench"
+
+
+def stamp(gen: GameInstanceGenerator) -> None:
+    """Record in the file being generated which generator wrote it: {"package", "version"} (the
+    installed release; the same for every commit of a release, so the same seed and config still
+    give the same bytes). run.json copies it (sartco.clem.core.provenance.GENERATION_FIELDS)."""
+    try:
+        version = metadata.version(PACKAGE)
+    except metadata.PackageNotFoundError:  # run from a checkout that was never installed
+        version = None
+    gen.instances["generator"] = {"package": PACKAGE, "version": version}
 
 
 def written(gen: GameInstanceGenerator, path: str) -> str:

@@ -32,7 +32,7 @@ from argparse import Namespace
 from pathlib import Path
 
 from sartco.clem.core.episodes import board_fields
-from sartco.clem.core.instance_files import records, spread, written
+from sartco.clem.core.instance_files import records, spread, stamp, written
 from sartco.clem.core.instance_values import InstanceGenerator
 from sartco.dataset import BOARD_KINDS, DESCRIBED_TASK, experiment_name
 from sartco.episode import DescribeEpisode, DescribeExperiment
@@ -85,6 +85,7 @@ class DescribeFile(InstanceGenerator):
 
     def on_generate(self, seed: int, **kwargs):
         modes_file(self, seed, **kwargs)
+        stamp(self)
 
 
 def _write(options: Namespace, game_dir: Path, name: str, modes: tuple[str, ...], per_experiment: int | None) -> str:

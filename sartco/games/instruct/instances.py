@@ -44,7 +44,7 @@ from argparse import Namespace
 from pathlib import Path
 from typing import Callable
 
-from sartco.clem.core.instance_files import records, written
+from sartco.clem.core.instance_files import records, stamp, written
 from sartco.dataset import (BOARD_KINDS, DESCRIBED_TASK, REGULAR_COMPLEX, REGULAR_SIMPLE, SIMPLE, board_kind,
                             experiment_name)
 from sartco.errors import UserError
@@ -78,6 +78,7 @@ class InstructFile(InstructGenerator):
 
     def on_generate(self, seed: int, **kwargs):
         self.build(self, seed, **kwargs)
+        stamp(self)
 
 
 def write(gen: InstructGenerator, name: str, seed: int, **kwargs) -> str:
