@@ -40,16 +40,28 @@ UNSURE = frozenset({"timeout", "resource_limit", None})
 ENDS = (b"exit", b"signal", b"timeout", b"overflow")  # a child that ran (it may have left answers)
 
 
-def frames(data: bytes) -> list[bytes]:
-    """The complete framed answers (4-byte big-endian length + answer) at the start of data."""
-    out, at = [], 0
+def _spans(data: bytes | bytearray, at: int) -> Iterator[tuple[int, int]]:
+    """(start, end) of each complete frame (4-byte big-endian length + answer) from offset `at`."""
     while at + 4 <= len(data):
         end = at + 4 + int.from_bytes(data[at:at + 4], "big")
         if end > len(data):
-            break
-        out.append(data[at + 4:end])
+            return
+        yield at + 4, end
         at = end
-    return out
+
+
+def frames(data: bytes) -> list[bytes]:
+    """The complete framed answers at the start of data."""
+    return [data[start:end] for start, end in _spans(data, 0)]
+
+
+def advance(data: bytes | bytearray, at: int) -> tuple[int, int]:
+    """How many frames complete from offset `at` of data, and the offset after them (the
+    template counts a child's answers as its output grows, without reading any byte twice)."""
+    n = 0
+    for _, end in _spans(data, at):
+        n, at = n + 1, end
+    return n, at
 
 
 def outcome(answer: bytes) -> str | None:

@@ -175,7 +175,8 @@ class Template:
 
     def _collect(self, pid: int, read: int, wall_time: float, frames: int = 0) -> tuple[bytes, int, bytes]:
         chunks: list[bytes] = []
-        size, done, cap = 0, 0, ANSWER_BYTES * max(1, frames)
+        size, cap = 0, ANSWER_BYTES * max(1, frames)
+        stream, at = bytearray(), len(CONFINED)  # with frames: the output so far, the next frame's offset
         deadline = time.monotonic() + wall_time
         try:
             pidfd = os.pidfd_open(pid)
@@ -200,8 +201,11 @@ class Template:
                         if size > cap + 1:
                             how = b"overflow"
                             break
-                        if frames and (n := len(gold.frames(b"".join(chunks)[len(CONFINED):]))) > done:
-                            done, deadline = n, time.monotonic() + wall_time  # the next one's time starts
+                        if frames:
+                            stream += chunk
+                            ended, at = gold.advance(stream, at)
+                            if ended:  # the next answer's time starts
+                                deadline = time.monotonic() + wall_time
                 if pidfd is not None and pidfd in ready:
                     watch.remove(pidfd)
                     if read in watch:  # the child ended: read what it left in the pipe
