@@ -15,9 +15,7 @@ def run_many(programs: list[str], rows: int, cols: int, *, gold: bool = False) -
     """Each program on its own fresh rows x cols board, results in input order. `gold`: the
     programs are an instance's gold code at the probes' candidate arguments, never a model's (the
     local sandbox runs a batch of them in one confined child: sartco.program.worker, mode "gold")."""
-    if not programs:
-        return []
-    return execute_many(programs, rows, cols, gold=True) if gold else current().execute_many(programs, rows, cols)
+    return execute_many(programs, rows, cols, gold=gold) if programs else []
 
 
 def restart() -> None:
