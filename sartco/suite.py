@@ -220,9 +220,14 @@ def _tables(results: Path, out: Path, pairs: list[tuple[str, str]]) -> int:
 
     process = multiprocessing.get_context("fork").Process(target=tables)
     process.start()
+    send.close()  # the child's end alone: a child that dies unanswered is an EOF here
     report = _timed("sartco report", lambda: cli.main(["report", "-r", str(results), "--out", str(out)]), results / LOG)
-    line, status = receive.recv() if receive.poll(24 * 3600) else ("== clem eval's tables: no answer", 1)
+    try:
+        line, status = receive.recv()
+    except EOFError:
+        line, status = "", 1
     process.join()
+    line = line or f"== clem eval's tables: ended without a result (exit code {process.exitcode})"
     print(line, flush=True)
     print(report[0], flush=True)
     return report[1] if status == 0 else 1

@@ -103,3 +103,28 @@ def test_a_results_folder_that_holds_a_run_of_the_plan_is_refused(tmp_path):
     done = _run(["sartco", "suite", "-r", str(tmp_path), "-m", "rulebased", "--erring", "-g", "cobot_describe"])
     assert done.returncode == 2
     assert "cobot_describe exists" in done.stderr and "make clean-results" in done.stderr
+
+
+@pytest.mark.parametrize("dies", [False, True])
+def test_the_tables_beside_the_report_fail_the_suite_when_they_fail(tmp_path, monkeypatch, capsys, dies):
+    """clem eval's tables run in a forked process beside `sartco report`: an exception there, or a
+    process that ends without a word, is exit 1 with a line that says so (never a hang)."""
+    from sartco import cli
+    from sartco.clem.tooling import evaluate
+
+    def broken(results, pairs):
+        if dies:
+            os._exit(3)
+        raise RuntimeError("no score files")
+
+    monkeypatch.setattr(evaluate, "evaluate", broken)
+    monkeypatch.setattr(cli, "main", lambda argv: 0)
+    assert suite._tables(tmp_path, tmp_path / "scores", []) == 1
+    out = capsys.readouterr().out.splitlines()
+    if dies:
+        assert out[0] == "== clem eval's tables: ended without a result (exit code 3)"
+    else:
+        assert out[0].startswith("== clem eval's tables (raw.csv, results.csv, results.html): exit 1 in ")
+    assert out[1].startswith("== sartco report: exit 0 in ")
+    if not dies:
+        assert "RuntimeError: no score files" in (tmp_path / schedule.LOG).read_text()
