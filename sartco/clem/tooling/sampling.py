@@ -1,21 +1,22 @@
 """`sartco sample -g GAME -m MODEL -n N -t T [-r RESULTS] [-b B] [-i FILE] [-e EXP] [-l TOKENS]`:
 N samples of every episode, for pass@k (`sartco report -r RESULTS` writes passk.md / .csv).
 
-The samples are N ordinary `clem run`s (then `clem score`) into sibling folders
+The samples are N ordinary runs (`clem run`, then `clem score`) into sibling folders
 RESULTS/samples/s1 .. sN, one clemcore results folder each, with the same game, model,
 temperature T and instances; clemcore numbers the episodes the same way in each, so episode k of
 s1 and episode k of s2 are two samples of one episode. Ordinary runs (not clemcore's
 BranchingRunner) because they work with every backend and runner, `-b` with `openai_batching`
 included, and a results folder of one sample is what `sartco report` and `clem eval` already
-read. `sartco report -r RESULTS` leaves RESULTS/samples out of its other tables.
-clem runs in the current working directory with the environment as given (key.json,
-model_registry.json, CLEMBENCH_HOME as for a plain `clem run`).
+read. They are played in this process through clemcore's own `run` and `score` (what `clem run`
+and `clem score` call; clemcore is imported once, not twice per sample), with the run's options
+in the game selector (sartco.clem.core.benchmark.run_selector), so that each sample's run.json
+says what `clem run` would have written. `sartco report -r RESULTS` leaves RESULTS/samples out of
+its other tables. The runs read the current working directory and the environment as a plain
+`clem run` does (key.json, model_registry.json, CLEMBENCH_HOME).
 """
 from __future__ import annotations
 
 import argparse
-import subprocess
-import sys
 from pathlib import Path
 
 from sartco.errors import UserError
@@ -36,22 +37,29 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("-l", "--max-tokens", type=int, help="clem run -l")
 
 
-def clem_args(args: argparse.Namespace, folder: Path) -> list[str]:
-    """The `clem run` of one sample."""
-    out = ["run", "-g", args.game, "-m", args.model, "-t", str(args.temperature), "-r", str(folder)]
-    for flag, value in (("-b", args.batch_size), ("-i", args.instances), ("-e", args.experiment),
-                        ("-l", args.max_tokens)):
-        if value is not None:
-            out += [flag, str(value)]
-    return out
+def play(args: argparse.Namespace, folder: Path) -> None:
+    """One sample: `clem run` of the game and model into `folder`, then `clem score` of it."""
+    from clemcore import cli as clem_cli
+    from clemcore.backends import ModelSpec
 
+    from sartco.clem.core.benchmark import run_selector
 
-def clem(argv: list[str]) -> None:
-    clem_bin = Path(sys.executable).parent / "clem"
-    done = subprocess.run([str(clem_bin), *argv])
-    if done.returncode != 0:
-        raise UserError(f"clem {' '.join(argv)} failed (exit {done.returncode}; clem's message is above): fix what it "
-                        f"names, then complete that sample with `sartco resume`, or remove the samples folder and sample again")
+    from .resume import CLEM_DEFAULTS  # clem run's -l and -b when not given
+
+    batch_size = args.batch_size or CLEM_DEFAULTS["batch_size"]
+    max_tokens = args.max_tokens if args.max_tokens is not None else CLEM_DEFAULTS["max_tokens"]
+    try:
+        clem_cli.run(run_selector(args.game, folder, experiment=args.experiment, batch_size=batch_size),
+                     ModelSpec.from_strings([args.model]),
+                     gen_args=dict(temperature=args.temperature, max_tokens=max_tokens),
+                     experiment_name=args.experiment, instances_filename=args.instances, results_dir_path=folder,
+                     batch_size=batch_size)
+    except SystemExit as stop:  # clemcore: 1 after logging an episode's exception; a bad instance file: 2
+        if stop.code:
+            raise UserError(f"the run of {folder} failed (exit {stop.code}; its message is above): fix what it "
+                            f"names, then complete that sample with `sartco resume`, or remove the samples folder "
+                            f"and sample again") from None
+    clem_cli.score(args.game, results_dir=str(folder))
 
 
 def run(args: argparse.Namespace) -> int:
@@ -62,8 +70,7 @@ def run(args: argparse.Namespace) -> int:
         raise UserError(f"{root} exists already: choose another -r or remove it")
     for k in range(1, args.samples + 1):
         folder = root / f"s{k}"
-        clem(clem_args(args, folder))
-        clem(["score", "-g", args.game, "-r", str(folder)])
+        play(args, folder)
         print(f"sartco sample: sample {k} of {args.samples} in {folder}", flush=True)
     print(f"sartco sample: {args.samples} samples in {root}; `sartco report -r {args.results}` writes passk.md")
     return 0
