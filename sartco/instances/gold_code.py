@@ -12,14 +12,16 @@ from .storage import load_dataset
 
 def run_gold_code(records: list[BoardRecord]) -> list[dict[str, Execution]]:
     """Per record, the execution of each code style's total_code (in the record's style order); the
-    programs run in one batch per board size."""
+    programs run in one batch per board size. They are a dataset's gold code, never a model's, so
+    the local sandbox may run a chunk of them in one confined child (its mode "gold": the same
+    verdicts as a child per program, sartco.program.gold)."""
     jobs: dict[tuple[int, int], list[tuple[int, str, str]]] = {}
     for i, r in enumerate(records):
         for style, code in r["code"].items():
             jobs.setdefault((r["rows"], r["cols"]), []).append((i, style, code["total_code"]))
     results: list[dict[str, Execution]] = [{} for _ in records]
     for (rows, cols), group in jobs.items():
-        for (i, style, _), ex in zip(group, execute_many([code for _, _, code in group], rows, cols)):
+        for (i, style, _), ex in zip(group, execute_many([code for _, _, code in group], rows, cols, gold=True)):
             results[i][style] = ex
     return results
 
