@@ -6,7 +6,10 @@
                                                   one (sartco.episode.InstructEpisode), with
                                                   the `script` mock answers instead of gold code
 - fence(code)                                     an answer with its code in a fenced block
-- sh(*args)                                       a command that must succeed
+- sh(*args)                                       a command that must succeed (its own process:
+                                                  tests/forkserver.py)
+- clem_process(args, cwd)                         the `clem` process in `cwd` (its own process, as
+                                                  sartco.clem.tooling.benchrun.clem starts it)
 - clem(*args)                                     clemcore's CLI in this process, must succeed
 - sartco(*args)                                   the `sartco` command in this process: its exit
                                                   status, stdout and stderr
@@ -21,6 +24,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+from forkserver import command
 from sartco.episode import InstructEpisode
 
 REPO = Path(__file__).resolve().parents[1]
@@ -80,9 +84,18 @@ def play(instances: list[dict], experiment: dict, results_dir: Path, model: str 
 
 def sh(*args, cwd=REPO, timeout=900) -> subprocess.CompletedProcess:
     """Run a command; fail the test with the end of its output when it fails."""
-    done = subprocess.run(args, cwd=cwd, capture_output=True, text=True, timeout=timeout)
+    done = command(args, cwd=cwd, timeout=timeout)
     assert done.returncode == 0, f"{' '.join(map(str, args))} failed:\n{done.stdout[-2000:]}\n{done.stderr[-2000:]}"
     return done
+
+
+def clem_process(args: list, cwd: Path) -> None:
+    """The `clem` process of sartco.clem.tooling.benchrun.clem (the games of this checkout, the
+    registries and key.json of `cwd`), which must succeed; from tests/forkserver.py."""
+    from sartco.clem.tooling import benchrun
+    env = dict(os.environ, CLEMBENCH_HOME=str(benchrun.GAME_DIR.parents[1]))
+    done = command([Path(sys.executable).parent / "clem", *args], cwd=cwd, env=env, timeout=900)
+    assert done.returncode == 0, f"clem {' '.join(map(str, args))} failed:\n{done.stdout[-2000:]}\n{done.stderr[-2000:]}"
 
 
 def clem(*args, cwd=REPO) -> None:

@@ -1,18 +1,18 @@
 """The openai_batching backend in real `clem run`s against the stub server: the response cache
-serves a repeated run without a request reaching the server; a hung server with a 3 s timeout
+serves a repeated run without a request reaching the server; a hung server with a 2 s timeout
 ends every request (retried, then aborted, logged) and every episode is recorded as harness_error
 with the reason, sequential and batched (issue 21), and a server failing some requests spoils
 only their episodes."""
 import json
 import os
 import re
-import subprocess
 import sys
 import time
 
 import pytest
 
-from play_helpers import clem, stub_scratch
+from forkserver import command
+from play_helpers import clem, clem_process, stub_scratch
 from sartco.cli import main as sartco_main
 from sartco.clem.tooling import benchrun
 from sartco.clem.tooling.stub_server import StubServer, answer_table, conversation_key
@@ -28,8 +28,8 @@ def setup(tmp_path, server: StubServer, **config) -> tuple:
 def run(tmp_path, instances_file, results: str, batch: int) -> None:
     """The real `clem run` process (the backend files, key.json and model registry of its folder), then
     `clem score` in this process (clemcore's CLI: the same scores.json, without importing clemcore again)."""
-    benchrun.clem(["run", "-g", benchrun.GAME, "-m", benchrun.MODEL, "-b", str(batch), "-i", str(instances_file),
-                   "-r", str(tmp_path / results)], tmp_path)
+    clem_process(["run", "-g", benchrun.GAME, "-m", benchrun.MODEL, "-b", str(batch), "-i", str(instances_file),
+                  "-r", str(tmp_path / results)], tmp_path)
     clem("score", "-g", benchrun.GAME, "-r", tmp_path / results)
 
 
@@ -69,13 +69,13 @@ def report(tmp_path, results, capsys) -> tuple[int, str]:
 @pytest.mark.parametrize("batch", [1, 4])
 def test_a_hung_server_gives_recorded_harness_errors_and_the_run_goes_on(tmp_path, batch, capsys):
     with StubServer({}, hang=True, max_seconds=300) as server:
-        # a second try starts while the first (3 s and its overrun: a second and more on a loaded
-        # machine) took less than the 5.9 s budget, a third never (two tries take 6 s at least)
-        _, file = setup(tmp_path, server, timeout=3, retries=5, backoff=0.01, retry_budget=5.9)
+        # a second try starts while the first (2 s and its overrun: a second and more on a loaded
+        # machine) took less than the 3.9 s budget, a third never (two tries take 4 s at least)
+        _, file = setup(tmp_path, server, timeout=2, retries=5, backoff=0.01, retry_budget=3.9)
         start = time.monotonic()
         run(tmp_path, file, "results", batch)   # -b 1: sequential; -b 4: the four episodes batched
         took = time.monotonic() - start
-        assert server.requests == 2 * 4       # 4 episodes, 2 tries each (3 s + 3 s > the 5.9 s budget)
+        assert server.requests == 2 * 4       # 4 episodes, 2 tries each (2 s + 2 s > the 3.9 s budget)
     assert took < 120, took
     log = (tmp_path / "clembench.log").read_text()
     assert log.count("request aborted") == 4 and "APITimeoutError after 2 tries" in log
@@ -83,7 +83,7 @@ def test_a_hung_server_gives_recorded_harness_errors_and_the_run_goes_on(tmp_pat
     assert len(episodes) == 4
     for s in episodes.values():   # recorded, aborted, not scored against the model (no parse_error)
         assert (s["Error Category"], s["Aborted"], s["Main Score"]) == ("harness_error", 1, None)
-        assert re.fullmatch(r"model server: no answer after 2 tries in \d+ s \(timeout 3 s\)", s["Harness Error"])
+        assert re.fullmatch(r"model server: no answer after 2 tries in \d+ s \(timeout 2 s\)", s["Harness Error"])
     status, stderr = report(tmp_path, tmp_path / "results", capsys)
     assert status == HARNESS_STATUS, stderr[-2000:]
     assert "4 harness error(s)" in stderr
@@ -93,9 +93,9 @@ def test_a_hung_server_gives_recorded_harness_errors_and_the_run_goes_on(tmp_pat
         games = [i for e in benchrun.select_instances(EXPERIMENTS, 2)["experiments"] for i in e["game_instances"]]
         with StubServer(answer_table(games), latency=0.0) as server:
             benchrun.write_scratch(tmp_path, server.base_url, "openai_batching", 4)
-            done = subprocess.run([sys.executable, "-m", "sartco", "resume", "-r", str(tmp_path / "results"), "-g",
-                                   benchrun.GAME, "-m", benchrun.MODEL, "-b", "4"], cwd=tmp_path, capture_output=True,
-                                  text=True, timeout=300, env=dict(os.environ, CLEMBENCH_HOME=str(benchrun.GAME_DIR.parents[1])))
+            done = command([sys.executable, "-m", "sartco", "resume", "-r", str(tmp_path / "results"), "-g",
+                            benchrun.GAME, "-m", benchrun.MODEL, "-b", "4"], cwd=tmp_path, timeout=300,
+                           env=dict(os.environ, CLEMBENCH_HOME=str(benchrun.GAME_DIR.parents[1])))
         assert done.returncode == 0 and "4 to play" in done.stdout, done.stdout[-2000:] + done.stderr[-2000:]
         assert [s["Main Score"] for s in episodes_of(tmp_path / "results").values()] == [100.0] * 4
 
@@ -117,19 +117,19 @@ def test_a_server_failing_some_requests_spoils_only_their_episodes(tmp_path, cap
 
 
 def test_sample_plays_every_episode_n_times_through_openai_batching(tmp_path):
-    import os
-    import subprocess
-    import sys
     games = [i for e in benchrun.select_instances(EXPERIMENTS, 2)["experiments"] for i in e["game_instances"]]
     with StubServer(answer_table(games), latency=0.0) as server:
         _, file = setup(tmp_path, server, cache="cache")   # temperature 0.7: the cache must not answer
-        done = subprocess.run([sys.executable, "-m", "sartco", "sample", "-g", benchrun.GAME, "-m", benchrun.MODEL,
-                               "-n", "2", "-t", "0.7", "-b", "4", "-i", str(file), "-r", "res"], cwd=tmp_path,
-                              env=dict(os.environ, CLEMBENCH_HOME=str(benchrun.GAME_DIR.parents[1])),
-                              capture_output=True, text=True, timeout=600)
+        done = command([sys.executable, "-m", "sartco", "sample", "-g", benchrun.GAME, "-m", benchrun.MODEL,
+                        "-n", "2", "-t", "0.7", "-b", "4", "-i", str(file), "-r", "res"], cwd=tmp_path,
+                       env=dict(os.environ, CLEMBENCH_HOME=str(benchrun.GAME_DIR.parents[1])), timeout=600)
         assert done.returncode == 0, done.stderr[-2000:]
         one_run = sum(len(i["turns"]) for i in games)
         assert server.requests == 2 * one_run and server.unknown == 0
     for k in (1, 2):
         assert len(list((tmp_path / "res" / "samples" / f"s{k}").rglob("scores.json"))) == len(games)
+        # each sample is played in the `sartco sample` process; its run.json says what `clem run` would
+        run = json.loads((tmp_path / "res" / "samples" / f"s{k}" / benchrun.MODEL / benchrun.GAME / "run.json").read_text())
+        assert (run["generation"], run["batch_size"], run["instance_file"]["name"]) == \
+            ({"temperature": 0.7, "max_tokens": 300}, 4, "instances_small")
     assert not (tmp_path / "cache").exists()

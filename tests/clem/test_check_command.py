@@ -3,11 +3,12 @@ is asked, as a command: exit 0 and one line for a playable file, exit 2 and one 
 file, the episode and the field for a broken one."""
 import json
 import shutil
-import subprocess
 import sys
 from pathlib import Path
 
 import pytest
+
+from forkserver import command
 
 from sartco.cli import main
 
@@ -49,11 +50,11 @@ def test_a_good_file_passes_with_one_line(capsys):
 def test_the_command_exits_0_and_2():
     """The installed `sartco` script: the exit codes a shell script reads."""
     sartco = str(Path(sys.executable).parent / "sartco")
-    good = subprocess.run([sartco, "check-instances", "games/cobot_instruct/in/instances_smoke.json"],
-                          cwd=REPO, capture_output=True, text=True, timeout=300)
+    good = command([sartco, "check-instances", "games/cobot_instruct/in/instances_smoke.json"],
+                   cwd=REPO, capture_output=True, text=True, timeout=300)
     assert good.returncode == 0 and len(good.stdout.splitlines()) == 1, good.stdout + good.stderr
-    bad = subprocess.run([sartco, "check-instances", "games/cobot_instruct/in/instances_smoke.json", "-e", "nope"],
-                         cwd=REPO, capture_output=True, text=True, timeout=300)
+    bad = command([sartco, "check-instances", "games/cobot_instruct/in/instances_smoke.json", "-e", "nope"],
+                  cwd=REPO, capture_output=True, text=True, timeout=300)
     assert bad.returncode == 2 and "no experiment 'nope'" in bad.stderr and not bad.stdout
 
 

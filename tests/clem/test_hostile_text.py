@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from play_helpers import clem
+from play_helpers import clem, clem_process
 from sartco.clem.players.sourced import fenced
 from sartco.clem.tooling import benchrun
 from sartco.clem.tooling.stub_server import StubServer, answer_table, conversation_key
@@ -47,8 +47,8 @@ def test_odd_characters_lose_no_episode(tmp_path, backend, batch):
     folder, results = tmp_path / "run", tmp_path / "run" / "results"
     with StubServer(answers, latency=0.0, max_requests=50) as server:
         benchrun.write_scratch(folder, server.base_url, backend, 4)
-        benchrun.clem(["run", "-g", benchrun.GAME, "-m", benchrun.MODEL, "-b", str(batch), "-i",
-                       str(instances_file.with_suffix("")), "-r", str(results)], folder)
+        clem_process(["run", "-g", benchrun.GAME, "-m", benchrun.MODEL, "-b", str(batch), "-i",
+                      str(instances_file.with_suffix("")), "-r", str(results)], folder)
     clem("score", "-g", benchrun.GAME, "-r", results)   # the same commands in this process
     clem("eval", "-r", results)
 

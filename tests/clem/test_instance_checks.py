@@ -3,11 +3,12 @@ the experiment and the field, and exit code 2 (sartco.clem.core.benchmark); clem
 traceback and go on, or play "0 rows" of an unknown experiment and exit 0."""
 import json
 import shutil
-import subprocess
 import sys
 from pathlib import Path
 
 import pytest
+
+from forkserver import command
 
 from sartco.clem.core.benchmark import (EPISODE_FIELDS, InstanceFileError, RunOptions, check_instances, clem_run_options,
                                         resume_selector, run_options)
@@ -55,8 +56,8 @@ def test_bad_input_stops_clem_run_with_one_line(game_copy, case):
     text, options, expected = BAD[case]
     if text is not None:
         (game_copy / "games" / "cobot_instruct" / "in" / "instances.json").write_text(text)
-    done = subprocess.run([CLEM, "run", "-g", "cobot_instruct", "-m", "mock", "-r", "res", *options],
-                          cwd=game_copy, capture_output=True, text=True, timeout=600)
+    done = command([CLEM, "run", "-g", "cobot_instruct", "-m", "mock", "-r", "res", *options],
+                   cwd=game_copy, capture_output=True, text=True, timeout=600)
     assert done.returncode == 2, done.stdout[-1500:] + done.stderr[-1500:]
     [line] = [ln for ln in done.stderr.splitlines() if ln.startswith("clem run -g cobot_instruct: ")]
     assert expected in line and "/games/cobot_instruct/in/instances" in line
@@ -67,8 +68,8 @@ def test_bad_input_stops_clem_run_with_one_line(game_copy, case):
 @pytest.mark.slow
 def test_good_file_plays(game_copy):
     (game_copy / "games" / "cobot_instruct" / "in" / "instances.json").write_text(json.dumps(SMOKE))
-    done = subprocess.run([CLEM, "run", "-g", "cobot_instruct", "-m", "mock", "-r", "res", "-e",
-                           "rb_co_repetition_template"], cwd=game_copy, capture_output=True, text=True, timeout=600)
+    done = command([CLEM, "run", "-g", "cobot_instruct", "-m", "mock", "-r", "res", "-e",
+                    "rb_co_repetition_template"], cwd=game_copy, capture_output=True, text=True, timeout=600)
     assert done.returncode == 0, done.stderr[-1500:]
     assert len(list((game_copy / "res").rglob("interactions.json"))) == 2
 

@@ -5,11 +5,12 @@ generator whose input is missing says so and never replaces an instance file wit
 import importlib.util
 import json
 import shutil
-import subprocess
 import sys
 from pathlib import Path
 
 import pytest
+
+from forkserver import command
 
 from sartco.clem.core.benchmark import EPISODE_FIELDS, InstanceFileError, check_instances
 
@@ -95,8 +96,8 @@ def test_clem_run_stops_before_playing(tmp_path):
     shutil.copy(GAME / "master.py", folder)
     (folder / "clemgame.json").write_text(json.dumps(json.loads((GAME / "clemgame.json").read_text())[0]))
     shutil.copy(write(tmp_path, {"turns": []}), folder / "in" / "instances.json")
-    done = subprocess.run([CLEM, "run", "-g", "cobot_instruct", "-m", "mock", "-r", "res"], cwd=tmp_path,
-                          capture_output=True, text=True, timeout=600)
+    done = command([CLEM, "run", "-g", "cobot_instruct", "-m", "mock", "-r", "res"], cwd=tmp_path,
+                   capture_output=True, text=True, timeout=600)
     assert done.returncode == 2, done.stderr[-1500:]
     [line] = [ln for ln in done.stderr.splitlines() if ln.startswith("clem run -g cobot_instruct: ")]
     assert line.endswith("game_id 0: field 'turns' is empty (an episode has at least one turn)")
@@ -136,7 +137,6 @@ def test_paper_generator_without_a_data_folder_names_the_setting(tmp_path, monke
     """A wheel install without $SARTCO_DATA (issue 33): the line says which setting to give, not a
     placeholder path; with $SARTCO_DATA naming a missing folder it names that folder and the setting."""
     import os
-    import subprocess
     import sys
 
     import sartco.paper.episodes as paper_episodes
@@ -150,9 +150,9 @@ def test_paper_generator_without_a_data_folder_names_the_setting(tmp_path, monke
         "instancegenerator: no SARTCo data folder: set $SARTCO_DATA or `sartco --data DIR` (the folder with "
         "published/, gold_boards/, paper-protocol/); no instance file written\n")
     assert kept.read_text() == KEPT
-    done = subprocess.run([sys.executable, str(generator.__file__), "--protocol", "paper", *DATASET], cwd=REPO,
-                          capture_output=True, text=True, timeout=300,
-                          env={**os.environ, "SARTCO_DATA": str(tmp_path / "no-data")})
+    done = command([sys.executable, str(generator.__file__), "--protocol", "paper", *DATASET], cwd=REPO,
+                   capture_output=True, text=True, timeout=300,
+                   env={**os.environ, "SARTCO_DATA": str(tmp_path / "no-data")})
     assert done.returncode == 2 and done.stderr == (
         f"instancegenerator: SARTCo data folder {tmp_path / 'no-data'} not found: set $SARTCO_DATA or `sartco --data "
         "DIR` (the folder with published/, gold_boards/, paper-protocol/); no instance file written\n")

@@ -16,7 +16,8 @@ from pathlib import Path
 
 import pytest
 
-from play_helpers import REPO, clem, sartco, sh, stub_scratch
+from forkserver import command
+from play_helpers import REPO, clem, clem_process, sartco, sh, stub_scratch
 from sartco.clem.tooling import benchrun
 from sartco.clem.tooling.stub_server import StubServer, answer_table, conversation_key
 
@@ -30,8 +31,7 @@ EXPERIMENTS_SMALL = ["rb_so_repetition_template", "sb_so_first_order_template"] 
 def sartco_process(*args, cwd, env) -> subprocess.CompletedProcess:
     """The `sartco` process, for a resume whose model is the stub server's (backend files, key.json
     and model registry in `cwd`); the other commands run in this process (play_helpers.sartco)."""
-    return subprocess.run([str(BIN / "sartco"), *map(str, args)], cwd=cwd, capture_output=True, text=True,
-                          timeout=600, env=env)
+    return command([BIN / "sartco", *args], cwd=cwd, timeout=600, env=env)
 
 
 def played(results: Path, *extra: str) -> Path:
@@ -148,15 +148,15 @@ def test_one_resume_plays_the_unscored_harness_errors_again(tmp_path):
     env = dict(os.environ, CLEMBENCH_HOME=str(benchrun.GAME_DIR.parents[1]))
     with StubServer(answer_table(games), latency=0.0) as server:
         file = stub_setup(tmp_path / "clean", server)
-        benchrun.clem(["run", "-g", GAME, "-m", benchrun.MODEL, "-l", "512", "-b", "4", "-i", str(file), "-r", "results"],
-                      tmp_path / "clean")
+        clem_process(["run", "-g", GAME, "-m", benchrun.MODEL, "-l", "512", "-b", "4", "-i", str(file), "-r", "results"],
+                     tmp_path / "clean")
         clem("score", "-g", GAME, "-r", tmp_path / "clean" / "results")
     failing = frozenset({conversation_key(games[1]["turns"][:1])})
     with StubServer(answer_table(games), latency=0.0, failing=failing) as server:
         file = stub_setup(tmp_path / "run", server, retries=1, backoff=0.01)
         first_url = server.base_url
-        benchrun.clem(["run", "-g", GAME, "-m", benchrun.MODEL, "-l", "512", "-b", "4", "-i", str(file), "-r", "results"],
-                      tmp_path / "run")   # not scored
+        clem_process(["run", "-g", GAME, "-m", benchrun.MODEL, "-l", "512", "-b", "4", "-i", str(file), "-r", "results"],
+                     tmp_path / "run")   # not scored
     with StubServer(answer_table(games), latency=0.0) as server:
         benchrun.write_scratch(tmp_path / "run", server.base_url, "openai_batching", 4)
         done = sartco_process("resume", "-r", "results", "-g", GAME, "-m", benchrun.MODEL, cwd=tmp_path / "run",

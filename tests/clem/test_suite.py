@@ -4,12 +4,12 @@ from __future__ import annotations
 
 import importlib.util
 import os
-import subprocess
 import sys
 from pathlib import Path
 
 import pytest
 
+from forkserver import command
 from sartco import schedule, suite
 
 REPO = Path(__file__).resolve().parents[2]
@@ -62,7 +62,8 @@ def test_the_next_task_of_a_worker_is_of_the_group_it_played():
 
 def _run(args, cwd=REPO):
     env = {**os.environ, "PATH": f"{BIN}{os.pathsep}{os.environ['PATH']}"}
-    return subprocess.run(args, cwd=cwd, env=env, capture_output=True, text=True, timeout=900)
+    return command([BIN / args[0], *args[1:]] if args[0] in ("clem", "sartco") else args, cwd=cwd, env=env,
+                   timeout=900)
 
 
 @pytest.mark.slow
@@ -72,13 +73,13 @@ def test_the_suite_writes_what_the_clem_commands_write(tmp_path):
                  "--erring", "-g", "cobot_instruct", "-i", "instances_smoke", "-j", "2"])
     assert done.returncode == 0, done.stdout + done.stderr
     assert "== cobot_instruct (erring): done in" in done.stdout
-    for command in (["clem", "run", "-g", "cobot_instruct", "-m", "rulebased", "-r", str(theirs), "-i", "instances_smoke"],
-                    ["clem", "run", "-g", "cobot_instruct", "-m", "erring", "-r", str(theirs), "-i", "instances_smoke"],
-                    ["clem", "score", "-r", str(theirs)], ["clem", "transcribe", "-r", str(theirs)],
-                    ["rm", "-f", str(theirs / "raw.csv")],
-                    ["clem", "eval", "-r", str(theirs), "-g", "cobot_instruct", "-m", "rulebased"],
-                    ["clem", "eval", "-r", str(theirs), "-g", "cobot_instruct", "-m", "erring"]):
-        step = _run(command)
+    for argv in (["clem", "run", "-g", "cobot_instruct", "-m", "rulebased", "-r", str(theirs), "-i", "instances_smoke"],
+                 ["clem", "run", "-g", "cobot_instruct", "-m", "erring", "-r", str(theirs), "-i", "instances_smoke"],
+                 ["clem", "score", "-r", str(theirs)], ["clem", "transcribe", "-r", str(theirs)],
+                 ["rm", "-f", str(theirs / "raw.csv")],
+                 ["clem", "eval", "-r", str(theirs), "-g", "cobot_instruct", "-m", "rulebased"],
+                 ["clem", "eval", "-r", str(theirs), "-g", "cobot_instruct", "-m", "erring"]):
+        step = _run(argv)
         assert step.returncode == 0, step.stdout + step.stderr
     compare = _compare()
     everything = {**compare.files(theirs)}

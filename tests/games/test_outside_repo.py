@@ -3,11 +3,12 @@ clembench checkout) with their own model_registry.json, which does not mention `
 game_registry.json pointing at our games. `sartco register` (sartco.register) adds sartco's model
 entries after the user's and writes the backend files; nothing patches clemcore."""
 import json
-import subprocess
 import sys
 from pathlib import Path
 
 import pytest
+
+from forkserver import command
 
 REPO = Path(__file__).resolve().parents[2]
 CLEM = str(Path(sys.executable).parent / "clem")
@@ -17,7 +18,7 @@ EXPERIMENT = "sb_so_optimal_function_template"
 
 
 def clem(*args, cwd):
-    done = subprocess.run([CLEM, *args], cwd=cwd, capture_output=True, text=True, timeout=600)
+    done = command([CLEM, *args], cwd=cwd, capture_output=True, text=True, timeout=600)
     assert done.returncode == 0, f"clem {' '.join(args)} failed:\n{done.stdout[-2000:]}\n{done.stderr[-2000:]}"
     return done.stdout
 
@@ -42,7 +43,7 @@ def play_and_score(user_dir, model):
 
 
 def sartco(*args, cwd):
-    return subprocess.run([SARTCO, *args], cwd=cwd, capture_output=True, text=True, timeout=120)
+    return command([SARTCO, *args], cwd=cwd, capture_output=True, text=True, timeout=120)
 
 
 def test_rulebased_beside_the_users_registry(user_dir):

@@ -4,11 +4,12 @@ checkout's, lets `clem list games` list our games in a folder of its own."""
 import json
 import os
 import re
-import subprocess
 import sys
 from pathlib import Path
 
 import pytest
+
+from forkserver import command
 
 REPO = Path(__file__).resolve().parents[2]
 CLEM = str(Path(sys.executable).parent / "clem")
@@ -38,8 +39,8 @@ def test_clem_list_games_with_the_documented_registry(tmp_path, entries):
     text = json.dumps(entries).replace(PLACEHOLDER, str(REPO))
     (tmp_path / "game_registry.json").write_text(text)
     env = {k: v for k, v in os.environ.items() if k != "CLEMBENCH_HOME"}
-    done = subprocess.run([CLEM, "list", "games"], cwd=tmp_path, env=env, capture_output=True, text=True,
-                          timeout=300)
+    done = command([CLEM, "list", "games"], cwd=tmp_path, env=env, capture_output=True, text=True,
+                   timeout=300)
     assert done.returncode == 0 and "Traceback" not in done.stderr, done.stdout[-1500:] + done.stderr[-1500:]
     listed = re.findall(r"^ ?(\w+):$", done.stdout, re.M)
     expected = {e["game_name"] for e in entries if "game_name" in e} or {

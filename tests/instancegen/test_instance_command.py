@@ -14,6 +14,8 @@ from pathlib import Path
 
 import pytest
 
+from forkserver import command
+
 from sartco.cli import main as sartco_main
 from sartco.dataset import REGULAR_COMPLEX, REGULAR_SIMPLE, SIMPLE, board_kind, experiment_name, kind_named
 from sartco.instancegen.command import MODES, generate
@@ -191,7 +193,6 @@ def test_the_naming_rule():
 def test_a_partial_describer_dataset_names_the_experiments_to_play(tmp_path):
     """A describer run of one of cobot_describe's three experiments, imported: the builder file
     cannot be made, and the line says which experiments to play and how (issue 33)."""
-    import subprocess
     import sys
 
     from play_helpers import clem
@@ -201,8 +202,8 @@ def test_a_partial_describer_dataset_names_the_experiments_to_play(tmp_path):
          "-r", str(results))
     assert sartco_main(["import-instructions", "-r", str(results), "--out", str(tmp_path / "described")]) == 0
     script, folder = copied_script(tmp_path, "cobot_instruct")
-    done = subprocess.run([sys.executable, str(folder / "instancegenerator.py"), "--describers", str(tmp_path / "described")],
-                          cwd=REPO, capture_output=True, text=True, timeout=300)
+    done = command([sys.executable, str(folder / "instancegenerator.py"), "--describers", str(tmp_path / "described")],
+                   cwd=REPO, capture_output=True, text=True, timeout=300)
     assert done.returncode == 2 and done.stderr == (
         f"instancegenerator: {tmp_path / 'described'}: the describer run played no episode of rb_so_repetition_describer, "
         "rb_co_repetition_describer: play each with `clem run -g cobot_describe -e EXPERIMENT -m MODEL -r RESULTS` into "

@@ -3,6 +3,7 @@ import io
 import json
 
 
+from forkserver import command
 from sartco.cli import main
 
 from paper_helpers import ROOT
@@ -146,15 +147,14 @@ def test_export_is_byte_identical_across_processes_and_hash_seeds():
 def test_score_responses_with_odd_characters_is_strict_utf8_and_scores_as_clem_does():
     """A lone surrogate or NUL in a response (or its id) gives one strict UTF-8 line each, and the
     answer is read as the game master reads it (escaped: a comment stays a comment)."""
-    import subprocess
     import sys
     rep = our_instances()["rb_so_repetition_template"]["game_instances"][0]
     rid = f"rb_so_repetition_template/{rep['board_id']}/repetition"
     odd = "```python\n" + rep["gold_turns"][0] + "\n# \ud800 \x00 \u202e\n```"
     requests = [{"id": rid, "responses": [odd]}, {"id": "nope/\ud800/x", "responses": ["\ud800"]}]
     stdin = "".join(json.dumps(r) + "\n" for r in requests)  # ASCII JSON: the surrogates as \ud800 escapes
-    done = subprocess.run([sys.executable, "-m", "sartco", "score-responses", "--protocol", "sartco"],
-                          input=stdin.encode(), capture_output=True, cwd=ROOT)
+    done = command([sys.executable, "-m", "sartco", "score-responses", "--protocol", "sartco"],
+                   input=stdin.encode(), capture_output=True, text=False, cwd=ROOT)
     assert done.returncode == 0, done.stderr.decode(errors="replace")[-500:]
     out = [json.loads(line) for line in done.stdout.decode("utf-8", errors="strict").splitlines()]
     assert out[0]["es"] == 1 and out[0]["category"] == "success"

@@ -3,13 +3,13 @@ report of a synthetic sample set, and `sartco sample` with the deterministic mod
 pass@k equals pass@1)."""
 import csv
 import json
-import subprocess
 import sys
 from itertools import combinations
 from math import prod
 
 import pytest
 
+from forkserver import command
 from play_helpers import GAMES, REPO, sartco, stub_scratch
 from report_helpers import write_results
 from sartco.cli import main as sartco_main
@@ -49,9 +49,9 @@ def sample(tmp_path, model: str, n: int, instances) -> dict:
     file = tmp_path / f"{model}_instances.json"
     file.write_text(json.dumps(instances))
     results = tmp_path / model
-    done = subprocess.run([sys.executable, "-m", "sartco", "sample", "-g", "cobot_instruct", "-m", model,
-                           "-n", str(n), "-t", "0.7", "-i", str(file.with_suffix("")), "-r", str(results)],
-                          cwd=REPO, capture_output=True, text=True, timeout=600)
+    done = command([sys.executable, "-m", "sartco", "sample", "-g", "cobot_instruct", "-m", model,
+                    "-n", str(n), "-t", "0.7", "-i", str(file.with_suffix("")), "-r", str(results)],
+                   cwd=REPO, timeout=600)
     assert done.returncode == 0, done.stderr[-2000:]
     assert sartco_main(["report", "-r", str(results), "--out", str(tmp_path / f"{model}_out")]) == 0
     return list(csv.DictReader((tmp_path / f"{model}_out" / "passk.csv").open()))
@@ -92,10 +92,9 @@ def test_harness_error_samples_are_left_out_and_fail_the_report(tmp_path):
     with StubServer(answer_table(games), latency=0.0, failing=failing) as server:
         stub_scratch(tmp_path, server.base_url, ["rb_so_repetition_template", "sb_so_first_order_template"],
                      retries=1, backoff=0.01)
-        done = subprocess.run([sys.executable, "-m", "sartco", "sample", "-g", "cobot_instruct", "-m", benchrun.MODEL,
-                               "-n", "2", "-t", "0.7", "-b", "4", "-i", str(tmp_path / "instances_small"), "-r", "res"],
-                              cwd=tmp_path, env=dict(os.environ, CLEMBENCH_HOME=str(benchrun.GAME_DIR.parents[1])),
-                              capture_output=True, text=True, timeout=600)
+        done = command([sys.executable, "-m", "sartco", "sample", "-g", "cobot_instruct", "-m", benchrun.MODEL,
+                        "-n", "2", "-t", "0.7", "-b", "4", "-i", str(tmp_path / "instances_small"), "-r", "res"],
+                       cwd=tmp_path, env=dict(os.environ, CLEMBENCH_HOME=str(benchrun.GAME_DIR.parents[1])), timeout=600)
         assert done.returncode == 0, done.stderr[-2000:]
     report = sartco("report", "-r", "res", "--out", "out", cwd=tmp_path)   # in this process (play_helpers)
     assert report.returncode == HARNESS_STATUS, report.stderr[-2000:]
