@@ -89,13 +89,17 @@ def sh(*args, cwd=REPO, timeout=900) -> subprocess.CompletedProcess:
     return done
 
 
-def clem_process(args: list, cwd: Path) -> None:
+def clem_process(args: list, cwd: Path) -> float:
     """The `clem` process of sartco.clem.tooling.benchrun.clem (the games of this checkout, the
-    registries and key.json of `cwd`), which must succeed; from tests/forkserver.py."""
+    registries and key.json of `cwd`), which must succeed, from tests/forkserver.py; its wall time."""
+    import time
+
     from sartco.clem.tooling import benchrun
     env = dict(os.environ, CLEMBENCH_HOME=str(benchrun.GAME_DIR.parents[1]))
+    start = time.monotonic()
     done = command([Path(sys.executable).parent / "clem", *args], cwd=cwd, env=env, timeout=900)
     assert done.returncode == 0, f"clem {' '.join(map(str, args))} failed:\n{done.stdout[-2000:]}\n{done.stderr[-2000:]}"
+    return time.monotonic() - start
 
 
 def clem(*args, cwd=REPO) -> None:

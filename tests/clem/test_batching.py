@@ -8,6 +8,7 @@ import openai
 import pytest
 from clemcore.backends import ModelSpec
 
+from play_helpers import clem_process
 from sartco.clem.core.outcomes import NoAnswer
 from sartco.clem.tooling import benchrun
 from sartco.clem.tooling.batching import OpenAIBatchingBackend, retry_delay
@@ -118,7 +119,9 @@ def test_answer_table_covers_every_turn():
 
 
 @pytest.mark.slow
-def test_bench_run_batched_scores_equal_sequential(tmp_path):
+def test_bench_run_batched_scores_equal_sequential(tmp_path, monkeypatch):
+    # its clem processes forked from the tests' warm parent (tests/forkserver.py), as the other runs here
+    monkeypatch.setattr(benchrun, "clem", clem_process)
     # multi-turn (first-order, 2-5 requests per episode) and single-turn episodes
     result = benchrun.bench(["sb_so_first_order_template", "rb_co_repetition_template"], episodes=5, latency=0.05,
                             concurrency=4, batch=4, out=tmp_path / "bench", max_seconds=600)
@@ -127,6 +130,13 @@ def test_bench_run_batched_scores_equal_sequential(tmp_path):
     assert result["sequential"]["requests"] == result["batched"]["requests"] == result["requests"] > 10
     one = json.loads(next((tmp_path / "bench" / "batched" / "results").rglob("scores.json")).read_text())
     assert one["episode scores"]["Main Score"] == 100.0  # the stub answered with the gold code
+
+
+def test_bench_runs_clem_as_a_process_and_names_its_failure(tmp_path):
+    """benchrun.clem, which the test above replaces: the installed `clem` in a process of its own."""
+    from sartco.errors import UserError
+    with pytest.raises(UserError, match="clem run -g no_such_game -m mock failed"):
+        benchrun.clem(["run", "-g", "no_such_game", "-m", "mock"], tmp_path)
 
 
 def test_bench_run_rejects_an_unknown_experiment(tmp_path):
