@@ -1,29 +1,29 @@
 """Command processes for the tests, forked from a warm parent: `command(args, ...)` is
-subprocess.run(args, capture_output=True, text=True, ...) for this checkout's `clem` and `sartco`
-scripts, `python -m MODULE` and `python SCRIPT.py`, and costs about 0.5 s instead of 4.
+subprocess.run(args, capture_output=True, text=True, ...) for a Python program (a script whose
+#! line names a Python interpreter, such as the `clem` and `sartco` scripts of a venv, `python -m
+MODULE`, `python SCRIPT.py`), and costs about 0.5 s instead of 4 for a `clem` command.
 
 Why: a `clem` process spends about 3.4 s of its 4 importing clemcore.clemgame, 3.0 s of them in
 one third-party package it imports, openenv.core (gradio, fastmcp, uvicorn, pandas; `python -X
 importtime -c "import clemcore.clemgame"`). The tests start about 80 such processes.
 
-How: one server process per pytest process (started at the first command, ended with it) that
-has imported PRELOAD, and nothing of clemcore or sartco (it checks), forks a child per command.
-The child is the command's own process: its own pid, stdin, stdout and stderr (the caller's
-pipes, passed over a Unix socket), working folder, environment and sys.argv; it runs the script
-with runpy as the interpreter would (`__main__`, sys.path[0] the script's folder, or the working
-folder for -m) and ends as a Python process ends (an uncaught exception: traceback and status 1;
-SystemExit's code; threads joined, atexit handlers run, streams flushed). clemcore and sartco are
-imported in the child, so everything they do at import (clemcore's logging config and its
-clembench.log in the working folder, settings read from the environment) happens there, as in a
-fresh process.
+How: one server process per interpreter and set of PYTHON* variables (this venv's python, the
+wheel's venv's; started at its first command, ended with the pytest process) that has imported
+PRELOAD, and nothing of clemcore or sartco (it checks), forks a child per command. The child is
+the command's own process: its own pid, stdin, stdout and stderr (the caller's pipes, passed over
+a Unix socket), working folder, environment and sys.argv; it runs the script with runpy as the
+interpreter would (`__main__`, sys.path[0] the script's folder, or the working folder for -m)
+and ends as a Python process ends (an uncaught exception: traceback and status 1; SystemExit's
+code; threads joined, atexit handlers run, streams flushed). clemcore and sartco are imported in
+the child, so everything they do at import (clemcore's logging config and its clembench.log in
+the working folder, settings read from the environment) happens there, as in a fresh process.
 
 What differs from a fresh interpreter, and when a fresh process runs instead:
 - PRELOAD's modules were imported before the child's environment and folder were set. They are
   third-party and read neither for anything these commands use.
 - The children of one server share its hash seed (string hashing): a command whose environment
-  sets any PYTHON* variable differently from the server's (PYTHONHASHSEED, PYTHONPATH, ...)
-  runs in a fresh process, as does any other interpreter (a venv of its own), `python -c`, and
-  every command when SARTCO_TEST_FRESH_PROCESSES=1 is set.
+  sets PYTHONHASHSEED runs in a fresh process, as does anything but a Python program (`bash`,
+  `git`), `python -c`, and every command when SARTCO_TEST_FRESH_PROCESSES=1 is set.
 Tests that signal a running process keep subprocess.Popen (tests/clem/test_resume_settings.py).
 """
 from __future__ import annotations
@@ -32,6 +32,7 @@ import atexit
 import json
 import os
 import selectors
+import shutil
 import signal
 import socket
 import struct
@@ -42,7 +43,7 @@ from pathlib import Path
 
 PRELOAD = ("openenv.core",)
 BIN = Path(sys.executable).parent
-_server: tuple[subprocess.Popen, socket.socket] | None = None
+_servers: dict[tuple, tuple[subprocess.Popen, socket.socket]] = {}   # by interpreter and PYTHON* variables
 
 
 # ---- in the server -------------------------------------------------------------------------------
@@ -96,53 +97,55 @@ def _child(request: dict, fds: list[int]) -> None:
 
 # ---- in the tests --------------------------------------------------------------------------------
 
-def _python_args(args: list[str]) -> list[str] | None:
-    """What the server runs for `args` (["-m", module, ...] or [script, ...]), or None for a fresh process."""
-    head = Path(args[0])
-    if str(head) == sys.executable:
-        if len(args) > 2 and args[1] == "-m":
-            return args[1:]
-        if len(args) > 1 and args[1].endswith(".py"):
-            return args[1:]
+def _interpreter(name: str, env: dict) -> Path | None:
+    """`name` (a path, or a command found on env's PATH) when it is a Python interpreter."""
+    found = name if os.sep in name else shutil.which(name, path=env.get("PATH", os.defpath))
+    return Path(found) if found and Path(found).name.startswith("python") and os.path.isfile(found) else None
+
+
+def _python_args(args: list[str], env: dict) -> tuple[str, list[str]] | None:
+    """(the interpreter, what its server runs: ["-m", module, ...] or [script, ...]) for `args`,
+    or None for a fresh process."""
+    python = _interpreter(args[0], env)
+    if python is not None:
+        if len(args) > 2 and args[1] == "-m" or len(args) > 1 and args[1].endswith(".py"):
+            return str(python), args[1:]
         return None
-    if head.is_absolute() and head.is_file():
-        with open(head, "rb") as f:
+    script = args[0] if os.sep in args[0] else shutil.which(args[0], path=env.get("PATH", os.defpath))
+    if script and os.path.isabs(script) and os.path.isfile(script):
+        with open(script, "rb") as f:
             first = f.readline().strip()
-        if first == f"#!{sys.executable}".encode():
-            return [str(head), *args[1:]]
+        python = _interpreter(first[2:].decode(errors="replace"), env) if first.startswith(b"#!/") else None
+        if python is not None and os.path.isabs(python):
+            return str(python), [script, *args[1:]]
     return None
 
 
-def _start() -> tuple[subprocess.Popen, socket.socket]:
-    global _server
-    if _server is None:
+def _start(python: str = sys.executable, env: dict | None = None) -> tuple[subprocess.Popen, socket.socket]:
+    """The server of `python` with env's PYTHON* variables (started with `env`)."""
+    env = dict(os.environ if env is None else env)
+    key = (python, tuple(sorted((k, v) for k, v in env.items() if k.startswith("PYTHON"))))
+    if key not in _servers:
         ours, theirs = socket.socketpair()
         here = str(Path(__file__).resolve().parent)
-        proc = subprocess.Popen([sys.executable, "-c", f"import sys; sys.path.insert(0, {here!r}); import forkserver; "
-                                 f"forkserver.serve({theirs.fileno()})"], pass_fds=[theirs.fileno()],
-                                stdin=subprocess.DEVNULL)
+        proc = subprocess.Popen([python, "-c", f"import sys; sys.path.insert(0, {here!r}); import forkserver; "
+                                 f"sys.path.remove({here!r}); forkserver.serve({theirs.fileno()})"],
+                                pass_fds=[theirs.fileno()], stdin=subprocess.DEVNULL, cwd="/", env=env)
         theirs.close()
-        _server = (proc, ours)
-        atexit.register(_stop)
-    return _server
+        _servers[key] = (proc, ours)
+        if len(_servers) == 1:
+            atexit.register(_stop)
+    return _servers[key]
 
 
 def _stop() -> None:
-    global _server
-    if _server is not None:
-        proc, sock = _server
-        _server = None
+    while _servers:
+        _, (proc, sock) = _servers.popitem()
         sock.close()
         try:
             proc.wait(timeout=30)
         except subprocess.TimeoutExpired:
             proc.kill()
-
-
-def _fresh_enough(env: dict) -> bool:
-    python = {k: v for k, v in os.environ.items() if k.startswith("PYTHON")}
-    return os.environ.get("SARTCO_TEST_FRESH_PROCESSES") != "1" and \
-        {k: v for k, v in env.items() if k.startswith("PYTHON")} == python
 
 
 def command(args, *, cwd=None, env: dict | None = None, timeout: float | None = None, input: str | bytes | None = None,
@@ -153,11 +156,12 @@ def command(args, *, cwd=None, env: dict | None = None, timeout: float | None = 
     assert capture_output, "command() always captures stdout and stderr"
     args = [str(a) for a in args]
     env = dict(os.environ if env is None else env)
-    program = _python_args(args)
-    if program is None or not _fresh_enough(env):
+    found = _python_args(args, env)
+    if found is None or os.environ.get("SARTCO_TEST_FRESH_PROCESSES") == "1" or "PYTHONHASHSEED" in env:
         return subprocess.run(args, cwd=cwd, env=env, capture_output=True, text=text, timeout=timeout,
                               input=input, stdin=None if input is not None else subprocess.DEVNULL)
-    _, sock = _start()
+    python, program = found
+    _, sock = _start(python, env)
     stdin_r, stdin_w = os.pipe()
     out_r, out_w = os.pipe()
     err_r, err_w = os.pipe()

@@ -64,9 +64,13 @@ def test_a_clem_run_says_exits_and_logs_as_a_fresh_one(tmp_path):
     assert server.poll() is None  # the server checked at its start that clemcore and sartco are not imported
 
 
-def test_another_hash_seed_gets_a_fresh_process(tmp_path):
-    code = [sys.executable, "-m", "sartco", "export-prompts", "--protocol", "paper", "--file", "sb_so_test_hc"]
-    assert forkserver._python_args([str(a) for a in code]) == [str(a) for a in code[1:]]
-    assert forkserver._fresh_enough(dict(os.environ))
-    assert not forkserver._fresh_enough(dict(os.environ, PYTHONHASHSEED="123"))
-    assert forkserver._python_args([sys.executable, "-c", "pass"]) is None  # -c: always fresh
+def test_what_runs_forked_and_what_fresh(tmp_path):
+    env = dict(os.environ, PATH=f"{BIN}{os.pathsep}{os.environ['PATH']}")
+    module = [sys.executable, "-m", "sartco", "export-prompts", "--protocol", "paper"]
+    assert forkserver._python_args(module, env) == (sys.executable, module[1:])
+    assert forkserver._python_args(["clem", "run"], env) == (sys.executable, [str(BIN / "clem"), "run"])  # on PATH
+    assert forkserver._python_args([sys.executable, "-c", "pass"], env) is None  # -c: always fresh
+    assert forkserver._python_args(["bash", "-c", "true"], env) is None
+    seeded = command([sys.executable, "-c", "print(hash('sartco'))"], env=dict(env, PYTHONHASHSEED="123"))
+    assert seeded.stdout == command([sys.executable, "-c", "print(hash('sartco'))"],
+                                    env=dict(env, PYTHONHASHSEED="123")).stdout

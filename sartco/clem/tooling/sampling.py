@@ -46,7 +46,7 @@ def play(args: argparse.Namespace, folder: Path) -> None:
 
     from .resume import CLEM_DEFAULTS  # clem run's -l and -b when not given
 
-    batch_size = args.batch_size or CLEM_DEFAULTS["batch_size"]
+    batch_size = int(args.batch_size or CLEM_DEFAULTS["batch_size"])
     max_tokens = args.max_tokens if args.max_tokens is not None else CLEM_DEFAULTS["max_tokens"]
     try:
         clem_cli.run(run_selector(args.game, folder, experiment=args.experiment, batch_size=batch_size),
