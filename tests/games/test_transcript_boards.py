@@ -23,30 +23,43 @@ TARGET = {"1:1": [["washer", "blue"], ["nut", "green"]], "7:3": [["screw", "red"
 GOLD = ["put(board, 'washer', 'blue', 1, 1)", "put(board, 'nut', 'green', 1, 1)", "put(board, 'screw', 'red', 7, 3)"]
 WRONG = "put(board, 'nut', 'blue', 1, 1)"  # one wrong stack, one missing piece
 
-# A page beside transcript.html that loads it in a frame as wide as a desktop window and reports
-# every picture (loaded? shown how wide? its smallest label in px at that width, from the SVG's
-# viewBox and font sizes; its link and whether the link resolves) and the font of every text block.
+# A page at the top of the results folder that loads each transcript (EPISODES: their folders) in
+# turn in a frame as wide as a desktop window and reports, per transcript, every picture (loaded?
+# shown how wide? its smallest label in px at that width, from the SVG's viewBox and font sizes;
+# its link and whether the link resolves) and the font of every text block. One browser for all.
 PROBE = """<!doctype html><html><body>
-<iframe id="t" src="transcript.html" style="width: 1000px; height: 3000px"></iframe>
 <pre id="out">pending</pre>
 <script>
+const EPISODES = %s;
+function loaded(frame) { return new Promise(done => frame.addEventListener("load", done, {once: true})); }
 window.addEventListener("load", async () => {
-  const d = document.getElementById("t").contentDocument;
-  const pictures = [];
-  for (const img of d.images) {
-    const svg = new DOMParser().parseFromString(atob(img.src.split(",")[1]), "image/svg+xml").documentElement;
-    const sizes = [...svg.querySelectorAll("text")].map(t => parseFloat(t.getAttribute("font-size")));
-    const shown = img.getBoundingClientRect().width;
-    const a = img.closest("a");
-    let status = null;
-    if (a) { try { status = (await fetch(a.href)).status; } catch (e) { status = String(e); } }
-    pictures.push({loaded: img.complete && img.naturalWidth > 0, shown,
-                   label: shown / svg.viewBox.baseVal.width * Math.min(...sizes), labels: sizes.length,
-                   texts: [...svg.querySelectorAll("text")].map(t => t.textContent),
-                   href: a ? a.getAttribute("href") : null, status});
+  const found = {};
+  for (const episode of EPISODES) {
+    const frame = document.createElement("iframe");
+    frame.style = "width: 1000px; height: 3000px";
+    const ready = loaded(frame);
+    frame.src = episode + "/transcript.html";
+    document.body.appendChild(frame);
+    await ready;
+    const d = frame.contentDocument;
+    const pictures = [];
+    for (const img of d.images) {
+      const svg = new DOMParser().parseFromString(atob(img.src.split(",")[1]), "image/svg+xml").documentElement;
+      const sizes = [...svg.querySelectorAll("text")].map(t => parseFloat(t.getAttribute("font-size")));
+      const shown = img.getBoundingClientRect().width;
+      const a = img.closest("a");
+      let status = null;
+      if (a) { try { status = (await fetch(a.href)).status; } catch (e) { status = String(e); } }
+      pictures.push({loaded: img.complete && img.naturalWidth > 0, shown,
+                     label: shown / svg.viewBox.baseVal.width * Math.min(...sizes), labels: sizes.length,
+                     texts: [...svg.querySelectorAll("text")].map(t => t.textContent),
+                     href: a ? a.getAttribute("href") : null, status});
+    }
+    const fonts = [...d.querySelectorAll(".sartco-text, .sartco-code")].map(e => getComputedStyle(e).fontFamily);
+    found[episode] = {pictures, fonts};
+    frame.remove();
   }
-  const fonts = [...d.querySelectorAll(".sartco-text, .sartco-code")].map(e => getComputedStyle(e).fontFamily);
-  document.getElementById("out").textContent = JSON.stringify({pictures, fonts});
+  document.getElementById("out").textContent = JSON.stringify(found);
 });
 </script></body></html>
 """
@@ -57,18 +70,15 @@ def look(browser, folder: Path, tmp_path: Path, tag: str) -> dict:
     server = http.server.ThreadingHTTPServer(
         ("127.0.0.1", 0), partial(http.server.SimpleHTTPRequestHandler, directory=str(folder)))
     threading.Thread(target=server.serve_forever, daemon=True).start()
-    found = {}
+    episodes = [page.parent.relative_to(folder).as_posix() for page in sorted(folder.rglob("transcript.html"))]
+    (folder / "probe.html").write_text(PROBE % json.dumps(episodes), encoding="utf-8")
     try:
-        for page in sorted(folder.rglob("transcript.html")):
-            (page.parent / "probe.html").write_text(PROBE, encoding="utf-8")
-            episode = page.parent.relative_to(folder).as_posix()
-            dom = browse(browser, tmp_path / f"profile-{tag}", "--virtual-time-budget=10000", "--dump-dom",
-                         f"http://127.0.0.1:{server.server_address[1]}/{episode}/probe.html").stdout
-            found[episode] = json.loads(re.search(r'<pre id="out">(.*?)</pre>', dom, re.S).group(1)
-                                        .replace("&quot;", '"').replace("&amp;", "&"))
+        dom = browse(browser, tmp_path / f"profile-{tag}", "--virtual-time-budget=60000", "--dump-dom",
+                     f"http://127.0.0.1:{server.server_address[1]}/probe.html").stdout
     finally:
         server.shutdown()
-    return found
+    return json.loads(re.search(r'<pre id="out">(.*?)</pre>', dom, re.S).group(1)
+                      .replace("&quot;", '"').replace("&amp;", "&"))
 
 
 def check(found: dict, scored: bool) -> None:
