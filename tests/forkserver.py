@@ -42,7 +42,6 @@ import time
 from pathlib import Path
 
 PRELOAD = ("openenv.core",)
-BIN = Path(sys.executable).parent
 _servers: dict[tuple, tuple[subprocess.Popen, socket.socket]] = {}   # by interpreter and PYTHON* variables
 
 

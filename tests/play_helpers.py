@@ -95,7 +95,7 @@ def clem_process(args: list, cwd: Path) -> float:
     import time
 
     from sartco.clem.tooling import benchrun
-    env = dict(os.environ, CLEMBENCH_HOME=str(benchrun.GAME_DIR.parents[1]))
+    env = benchrun.clem_env()
     start = time.monotonic()
     done = command([Path(sys.executable).parent / "clem", *args], cwd=cwd, env=env, timeout=900)
     assert done.returncode == 0, f"clem {' '.join(map(str, args))} failed:\n{done.stdout[-2000:]}\n{done.stderr[-2000:]}"

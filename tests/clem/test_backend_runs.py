@@ -4,7 +4,6 @@ ends every request (retried, then aborted, logged) and every episode is recorded
 with the reason, sequential and batched (issue 21), and a server failing some requests spoils
 only their episodes."""
 import json
-import os
 import re
 import sys
 import time
@@ -96,7 +95,7 @@ def test_a_hung_server_gives_recorded_harness_errors_and_the_run_goes_on(tmp_pat
             benchrun.write_scratch(tmp_path, server.base_url, "openai_batching", 4)
             done = command([sys.executable, "-m", "sartco", "resume", "-r", str(tmp_path / "results"), "-g",
                             benchrun.GAME, "-m", benchrun.MODEL, "-b", "4"], cwd=tmp_path, timeout=300,
-                           env=dict(os.environ, CLEMBENCH_HOME=str(benchrun.GAME_DIR.parents[1])))
+                           env=benchrun.clem_env())
         assert done.returncode == 0 and "4 to play" in done.stdout, done.stdout[-2000:] + done.stderr[-2000:]
         assert [s["Main Score"] for s in episodes_of(tmp_path / "results").values()] == [100.0] * 4
 
@@ -123,7 +122,7 @@ def test_sample_plays_every_episode_n_times_through_openai_batching(tmp_path):
         _, file = setup(tmp_path, server, cache="cache")   # temperature 0.7: the cache must not answer
         done = command([sys.executable, "-m", "sartco", "sample", "-g", benchrun.GAME, "-m", benchrun.MODEL,
                         "-n", "2", "-t", "0.7", "-b", "4", "-i", str(file), "-r", "res"], cwd=tmp_path,
-                       env=dict(os.environ, CLEMBENCH_HOME=str(benchrun.GAME_DIR.parents[1])), timeout=600)
+                       env=benchrun.clem_env(), timeout=600)
         assert done.returncode == 0, done.stderr[-2000:]
         one_run = sum(len(i["turns"]) for i in games)
         assert server.requests == 2 * one_run and server.unknown == 0

@@ -6,7 +6,6 @@ to repeat the run and is rewritten as episodes are played; `sartco report` print
 numbers come from."""
 import json
 from importlib import metadata
-import os
 import shutil
 import signal
 import subprocess
@@ -145,7 +144,7 @@ def test_one_resume_plays_the_unscored_harness_errors_again(tmp_path):
     """A run whose model server failed one episode, not yet scored: one resume scores the others,
     plays that one again and leaves the folder as an uninterrupted run leaves it."""
     games = stub_games()
-    env = dict(os.environ, CLEMBENCH_HOME=str(benchrun.GAME_DIR.parents[1]))
+    env = benchrun.clem_env()
     with StubServer(answer_table(games), latency=0.0) as server:
         file = stub_setup(tmp_path / "clean", server)
         clem_process(["run", "-g", GAME, "-m", benchrun.MODEL, "-l", "512", "-b", "4", "-i", str(file), "-r", "results"],

@@ -80,7 +80,6 @@ def test_harness_error_samples_are_left_out_and_fail_the_report(tmp_path):
     """`sartco sample` against a model server that never answers one episode (HTTP 500): its
     samples are harness errors, not the model's failures; pass@k is computed without them, says how
     many it left out, and `sartco report` exits 3 naming the resume that plays them again."""
-    import os
 
     from sartco.clem.tooling import benchrun
     from sartco.clem.tooling.stub_server import StubServer, answer_table, conversation_key
@@ -94,7 +93,7 @@ def test_harness_error_samples_are_left_out_and_fail_the_report(tmp_path):
                      retries=1, backoff=0.01)
         done = command([sys.executable, "-m", "sartco", "sample", "-g", "cobot_instruct", "-m", benchrun.MODEL,
                         "-n", "2", "-t", "0.7", "-b", "4", "-i", str(tmp_path / "instances_small"), "-r", "res"],
-                       cwd=tmp_path, env=dict(os.environ, CLEMBENCH_HOME=str(benchrun.GAME_DIR.parents[1])), timeout=600)
+                       cwd=tmp_path, env=benchrun.clem_env(), timeout=600)
         assert done.returncode == 0, done.stderr[-2000:]
     report = sartco("report", "-r", "res", "--out", "out", cwd=tmp_path)   # in this process (play_helpers)
     assert report.returncode == HARNESS_STATUS, report.stderr[-2000:]

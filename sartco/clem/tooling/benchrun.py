@@ -79,9 +79,14 @@ def write_scratch(folder: Path, base_url: str, backend: str, concurrency: int) -
     (folder / "model_registry.json").write_text(json.dumps([entry], indent=1))
 
 
+def clem_env() -> dict[str, str]:
+    """The environment of a clem process that finds the workspace's games (sartco.settings)."""
+    return dict(os.environ, CLEMBENCH_HOME=str(GAME_DIR.parents[1]))
+
+
 def clem(args: list[str], cwd: Path) -> float:
     """Run a clem command in `cwd` (games from the workspace, sartco.settings); its wall time in seconds."""
-    env = dict(os.environ, CLEMBENCH_HOME=str(GAME_DIR.parents[1]))
+    env = clem_env()
     clem_bin = Path(sys.executable).parent / "clem"
     start = time.monotonic()
     done = subprocess.run([str(clem_bin), *args], cwd=cwd, env=env, capture_output=True, text=True)
