@@ -14,7 +14,7 @@ from sartco.errors import UserError
 
 COMMANDS = {
     "execute": ("sartco.program.serve", "run programs from JSON lines on stdin in the sandbox"),
-    "bench-execute": ("sartco.bench_execute", "throughput of `sartco execute` against bare compile()"),
+    "bench-execute": ("sartco.bench_execute", "throughput of `sartco execute` against a bare process forking as many children"),
     "generate": ("sartco.instances.generate", "write a dataset version from a YAML config and a seed"),
     "instances": ("sartco.instancegen.command", "write the games' instance files (games/*/in/) from a dataset"),
     "stats": ("sartco.instances.stats", "table 1 of the paper, computed by enumeration"),

@@ -75,24 +75,26 @@ def outcome(answer: bytes) -> str | None:
     return code if isinstance(code, str) else None
 
 
-def run(template: Template, sources: list[str], rows: int, cols: int, limits: Limits,
+def run(template: Template, items: list[bytes], rows: int, cols: int, limits: Limits,
         semantics: str) -> list[tuple[bytes, int, bytes]]:
-    """(how, status, answer) per source, as the template reports them: the sources in one child;
-    from the first answer that the programs before it could have changed (or none came), each
-    in a child of its own."""
+    """(how, status, answer) per item (a program as the parent compiled it, compiled.py), as the
+    template reports them: the items in one child; from the first answer that the programs
+    before it could have changed (or none came), each in a child of its own."""
+    from . import compiled
+
     runtime = template.runtime
 
     def work() -> Iterator[bytes]:
-        for source in sources:
-            answer = runtime.answer(source, rows, cols, limits, semantics)
+        for item in items:
+            answer = compiled.answer(runtime, item, rows, cols, limits, semantics)
             yield len(answer).to_bytes(4, "big") + answer
 
-    walls = replace(limits, wall_time=limits.wall_time * len(sources))  # the CPU rlimit covers the chunk
-    how, _, data = template.spawn(work, limits, walls, len(sources))
+    walls = replace(limits, wall_time=limits.wall_time * len(items))  # the CPU rlimit covers the chunk
+    how, _, data = template.spawn(work, limits, walls, len(items))
     done: list[tuple[bytes, int, bytes]] = []
     for answer in frames(data) if how in ENDS else []:
         if outcome(answer) in UNSURE:
             break
         done.append((b"exit", 0, answer))
-    return done + [template.fork(partial(runtime.answer, s, rows, cols, limits, semantics), limits)
-                   for s in sources[len(done):]]
+    return done + [template.fork(partial(compiled.answer, runtime, item, rows, cols, limits, semantics), limits)
+                   for item in items[len(done):]]

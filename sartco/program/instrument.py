@@ -113,4 +113,4 @@ def _undefined_attributes(walk: Walk, offences: list):
 def prepare(source: str):
     """Parse, check and instrument; return a code object. Raises SyntaxError or Forbidden."""
     tree = compile(source, FILENAME, "exec", ast.PyCF_ONLY_AST, dont_inherit=True)
-    return compile(instrument(tree), FILENAME, "exec", dont_inherit=True)
+    return compile(instrument(tree), FILENAME, "exec", dont_inherit=True, optimize=0)  # asserts run, whatever -O

@@ -29,6 +29,7 @@ from collections import OrderedDict
 
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, Board, ErrorCode, WorldError
 
+from . import compiled
 from .driver import Worker
 from .execution import MODULE, SEMANTICS, Execution, Limits, not_a_str
 from .verdict import failed
@@ -156,10 +157,15 @@ class LocalSandbox:
                 else:
                     first.setdefault(p, i)
                     todo.append(i)
-            items = [json.dumps(programs[i]).encode() for i in todo]
+            # compiled here (compiled.py); a program that never runs has its Execution already
+            made = {i: json.dumps(programs[i]).encode() if mode == "breach" else
+                    compiled.prepare(programs[i], rows, cols, limits, semantics) for i in todo}
+            run = [i for i in todo if type(made[i]) is bytes]
+            items = [made[i] for i in run]
             answers = dispatch(self, items, rows, cols, limits, workers, semantics, mode) if items else []
-            for i, answer in zip(todo, answers):
-                results[i] = answer
+            made.update(zip(run, answers))
+            for i in todo:
+                results[i] = answer = made[i]
                 if cache and type(answer) is Execution:
                     self._remember((programs[i], rows, cols, limits, semantics, kept), answer)
             for i, source in copies:

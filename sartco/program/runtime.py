@@ -186,7 +186,16 @@ def namespace(board, init_board, name: str = "__main__") -> dict:
     chance.fresh()
     SERIALS.clear()
     return {"__builtins__": BUILTINS, "__name__": name, "board": board, "put": put, "init_board": init_board,
-            "np": load("numpy")}
+            "np": NUMPY[0] if RAN[0] == 1 else load("numpy")}
+
+
+# The programs this process has run (RAN[0], counted by _run). A template's child runs one: its
+# first program uses what the template made (np below; typing's caches emptied by the template)
+# instead of making it afresh, which in a forked child costs a page fault per page it writes.
+# The harness's gold programs of one batch share a child (worker.py, mode "gold"): every one after
+# the first gets its own np and empty caches.
+RAN = [0]
+NUMPY = [load("numpy")]
 
 
 def run(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE, source: str = "") -> list:
@@ -196,14 +205,14 @@ def run(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE, 
     return [ok, error, message, {} if board is None else board.cells(), 0 if board is None else board.puts]
 
 
-def answer(source, rows: int, cols: int, limits, semantics: str = MODULE) -> bytes:
-    """What a child sends its template for one program (worker.py): ASCII JSON
-    [ok, code or None, message, rows, cols, log], `log` the puts of the result board as one flat
-    list shape, colour, x, y, shape, ... of plain str and int. The parent replays the log and
-    decides the board (verdict.py): nothing else of the child's board leaves it."""
-    ok, error, message, board = _run(compile_program(source, limits), rows, cols, limits, semantics,
-                                     source if type(source) is str else "")
-    return encode(ok, error, message, board)
+def answer(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE, source: str = "") -> bytes:
+    """What a child sends its template for one program (worker.py), given what compile_program
+    made of it (the parent's compile, compiled.py): ASCII JSON [ok, code or None, message, rows,
+    cols, log], `log` the puts of the result board as one flat list shape, colour, x, y, shape,
+    ... of plain str and int. The parent replays the log and decides the board (verdict.py):
+    nothing else of the child's board leaves it. `source` is the program's text (the paper
+    protocol's `instruction`)."""
+    return encode(*_run(compiled, rows, cols, limits, semantics, source))
 
 
 def encode(ok, error, message, board) -> bytes:
@@ -237,9 +246,11 @@ def _run(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE,
     budget.LENGTH, budget.INT_BITS, budget.STOPPED = limits.length, limits.int_bits, None
     _STEPS = steps = repeat(True, limits.steps)
     BUILTINS["$t"] = steps.__next__  # no program can reach the dict: one serves them all
+    RAN[0] += 1
     env = namespace(board, init_board)
     env, scope = namespaces.paper(env, source) if semantics == PAPER else (env, env)
-    forget_typing()  # typing's caches start empty: nothing of an earlier program is in them
+    if RAN[0] > 1:
+        forget_typing()  # typing's caches start empty: nothing of an earlier program is in them
     old_limit = sys.getrecursionlimit()
     error = None
     try:

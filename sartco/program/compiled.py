@@ -1,0 +1,92 @@
+"""The parent's compile (issue 46): each program is parsed, checked, instrumented and compiled in
+the warm parent (runtime.compile_program), and its child gets only what it runs: the code object,
+marshalled. Compiling in a freshly forked child cost four times what it costs here (every page the
+parser and the checks touch is a copy-on-write fault there; docs/sandbox.md has the breakdown).
+
+Nothing of the program runs here: compile_program only parses (CPython's parser), walks the tree
+(instrument.py) and compiles it. What comes out is data the child runs under every wall, and the
+only thing the parent ever reads back is the child's answer (verdict.py), as before.
+
+The verdicts are those of a compile in the child:
+- a program refused here (forbidden, syntax_error, resource_limit, ...) gets the Execution its
+  child would have answered (no board: it never ran), without a child;
+- the compile runs with the recursion headroom a child had (REMAINING frames below the limit:
+  how deeply nested a program may be before "too deeply nested to compile" does not depend on
+  the caller's stack);
+- a compile that takes longer than the wall time is `timeout`, as it was when the child's clock
+  covered its compile (the run then gets the whole wall time);
+- the code does not depend on the parent's hash seed or -O: compile() is told optimize=0, and
+  a program whose code holds a frozenset constant (a set display of three or more constants,
+  `for c in {'red', 'blue', 'green'}`, `x in {1, 2}`) is compiled in its child as before: how a
+  set iterates can depend on the order its elements went in, which the compiler's steps and
+  marshal (it writes them sorted) would change, and on the hash seed.
+"""
+from __future__ import annotations
+
+import base64
+import marshal
+import sys
+import threading
+import time
+
+from .execution import MODULE, PAPER, Execution, Limits
+
+# frames between a compile and the recursion limit in a template's child before issue 46
+# (runtime._depth() == 10 where the child called compile_program, under the default limit 1000)
+REMAINING = 990
+
+
+def _depth() -> int:
+    frame, n = sys._getframe(), 0
+    while frame is not None:
+        frame, n = frame.f_back, n + 1
+    return n
+
+
+def _at_headroom(source: str, limits: Limits, thread: bool = False) -> tuple:
+    """runtime.compile_program(source, limits) with REMAINING frames of headroom: deeper calls
+    pad the stack up to it, a caller already deeper runs it in a fresh thread."""
+    from .runtime import compile_program
+
+    depth = _depth()  # as runtime._depth() counts it in this frame
+    target = sys.getrecursionlimit() - REMAINING
+    if depth < target:
+        return _at_headroom(source, limits, thread)
+    if depth == target or thread:
+        return compile_program(source, limits)
+    out: list = []
+    fresh = threading.Thread(target=lambda: out.append(_at_headroom(source, limits, True)), daemon=True)
+    fresh.start()
+    fresh.join()
+    return out[0]
+
+
+def prepare(source: str, rows: int, cols: int, limits: Limits, semantics: str = MODULE) -> bytes | Execution:
+    """The template's item for one program (a line: base64 of the marshalled (code, source), the
+    source only under the paper protocol, where the program sees its own text), or the Execution
+    of a program that never runs (refused, or a compile longer than the wall time)."""
+    from .runtime import encode
+    from .verdict import decide
+
+    start = time.perf_counter()
+    code, error, message = _at_headroom(source, limits)
+    if time.perf_counter() - start > limits.wall_time:
+        return decide(b"timeout", 0, b"", limits.wall_time)
+    if code is None:
+        return decide(b"exit", 0, encode(False, error, message, None), limits.wall_time)
+    if _frozensets(code):  # compiled in the child, as before (see the module docstring)
+        return base64.b64encode(marshal.dumps((None, source)))
+    return base64.b64encode(marshal.dumps((code, source if semantics == PAPER else "")))
+
+
+def _frozensets(code) -> bool:
+    """Whether the code (or a function in it) has a frozenset constant."""
+    return any(type(const) is frozenset or (hasattr(const, "co_consts") and _frozensets(const))
+               for const in code.co_consts)
+
+
+def answer(runtime, item: bytes, rows: int, cols: int, limits: Limits, semantics: str) -> bytes:
+    """In the child, after its walls: the answer (runtime.answer) of one item that prepare made."""
+    code, source = marshal.loads(base64.b64decode(item))
+    compiled = (code, None, "") if code is not None else runtime.compile_program(source, limits)
+    return runtime.answer(compiled, rows, cols, limits, semantics, source)
