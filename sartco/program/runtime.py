@@ -157,7 +157,7 @@ def describe(exc: BaseException) -> str:
         else:
             detail = str(exc)
             text = f"{type(exc).__name__}: {detail}" if detail else type(exc).__name__
-    except Exception:
+    except BaseException:  # a program's __str__ may raise anything: the message is then the name
         text = type(exc).__name__
     text = text[:MESSAGE_CHARS]
     return f"line {line}: {text}" if line else text
