@@ -40,7 +40,7 @@ from typing import Any
 from . import budget, chance, formatting, named, numpy_members, records
 from .attributes import own_function
 from .budget import STOPS, Forbidden, too_big
-from .classes import ProgramClass
+from .classes import ProgramClass, serial_hash
 from .conversions import INT
 from .json_module import MEMBERS as JSON_MEMBERS
 from .standin import Module
@@ -152,6 +152,7 @@ class suppress:  # contextlib's name
     on what a program may never swallow (budget.STOPS)."""
 
     __slots__ = ("_exceptions",)
+    __hash__ = serial_hash
 
     def __init__(self, *exceptions):
         self._exceptions = exceptions
