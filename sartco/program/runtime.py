@@ -40,7 +40,7 @@ from .budget import Forbidden, Limit
 from .execution import MODULE, PAPER, clean, not_a_str
 from .instrument import prepare
 from . import attributes, chance
-from .classes import SERIALS
+from .classes import SERIALS, program_hash
 from .records import build_class
 from .modules import forget_typing, import_module, load
 from .result import checked
@@ -85,6 +85,7 @@ _OWN = {  # builtins of ours (with budgets); the rest of ALLOWED_BUILTINS are Py
     "range": budget.checked_range, "round": budget.checked_round, "sum": budget.checked_sum,
     "print": budget.no_print, "int": conversions.INT, "str": conversions.STR, "pow": budget.power,
     "format": formatting.format_value, "repr": conversions.to_repr, "ascii": conversions.to_ascii,
+    "hash": program_hash,
 }
 BUILTINS = {
     **{name: _Refused(name) for name in DENIED},
@@ -159,7 +160,7 @@ def describe(exc: BaseException) -> str:
             text = f"{type(exc).__name__}: {detail}" if detail else type(exc).__name__
     except BaseException:  # a program's __str__ may raise anything: the message is then the name
         text = type(exc).__name__
-    text = text[:MESSAGE_CHARS]
+    text = conversions.relabel(text)[:MESSAGE_CHARS]
     return f"line {line}: {text}" if line else text
 
 
@@ -181,10 +182,11 @@ def namespace(board, init_board, name: str = "__main__") -> dict:
     """The globals of one program, a fresh module named `name` (`__main__`: a script, so
     `if __name__ == "__main__":` runs): `board`, `put`, `init_board`, `np` (numpy's stand-in, bound
     without an import as the authors' namespace bound it) and the sandbox's builtins.
-    A new program also starts the `random` stand-in and the default hashes of its objects
-    afresh (chance.py, classes.serial_hash)."""
+    A new program also starts the `random` stand-in, the default hashes of its objects and the
+    serials of addresses in its text afresh (chance.py, classes.serial_hash, conversions.relabel)."""
     chance.fresh()
     SERIALS.clear()
+    conversions.ADDRESSES.clear()
     return {"__builtins__": BUILTINS, "__name__": name, "board": board, "put": put, "init_board": init_board,
             "np": load("numpy")}
 
