@@ -272,11 +272,31 @@ class Template:
                 out.flush()
 
 
+ADDR_NO_RANDOMIZE = 0x0040000  # personality(2)
+
+
+def _fixed_layout() -> None:
+    """Run the template (and so its children) with the address space laid out alike in every
+    start: ASLR off for it alone (personality(2), then exec again). Python hashes functions,
+    None (3.11), NaN, exceptions, ... by their address, which then no longer differs between
+    templates of one machine and build (docs/sandbox.md says what it covers). Where the kernel
+    refuses the flag, the template runs as it is."""
+    try:
+        personality = ctypes.CDLL(None, use_errno=True).personality
+    except (OSError, AttributeError):
+        return
+    current = personality(0xFFFFFFFF)
+    if current == -1 or current & ADDR_NO_RANDOMIZE or personality(current | ADDR_NO_RANDOMIZE) == -1:
+        return
+    os.execv(sys.executable, sys.orig_argv)
+
+
 def main(parent: int = 0, breach: bool = False) -> int:
     """The template's life: the first line of stdin is the seccomp filter (BPF, base64), then
     chunks of programs (see the module docstring)."""
     from .confine import Unconfinable
 
+    _fixed_layout()
     _die_with_parent(parent)
     inp, out = sys.stdin.buffer, sys.stdout.buffer
     try:
