@@ -10,7 +10,7 @@ instances, random generators, stand-in modules hash by serial; `hash()` of anyth
 hashes by address (functions, None, NaN, exceptions, tuples of them) is a serial; every address
 in a text a program makes (str, repr, format, f-strings, %, str.format) and in its message is
 the serial of its first appearance. FLOOR: what only the template's fixed address layout
-(ASLR off for it, worker._fixed_layout) keeps alike, on one machine and build: sets of
+(ASLR off for it, child/template.py _fixed_layout) keeps alike, on one machine and build: sets of
 functions, of None pairs, of types and of bound methods, as the first program of a template.
 """
 import json

@@ -25,10 +25,10 @@ from __future__ import annotations
 import ast
 
 from .allowed import ATTRIBUTES, DENIED, FIELDS, PROVIDED
-from .budget import Forbidden
-from .classes import DEFINABLE, READABLE, mangle_private
-from .formatting import LONG_NUMBER, SPEC_DIGITS
-from .modules import MEMBERS, refusal
+from ..standins.budget import Forbidden
+from ..standins.classes import DEFINABLE, READABLE, mangle_private
+from ..standins.formatting import LONG_NUMBER, SPEC_DIGITS
+from ..standins.modules import MEMBERS, refusal
 
 CHECKED_OPS = {ast.Add: "$add", ast.Mult: "$mul", ast.Pow: "$pow", ast.LShift: "$lshift", ast.Mod: "$mod"}
 INPLACE_OPS = {ast.Add: "$iadd", ast.Mult: "$imul", ast.Pow: "$ipow", ast.LShift: "$ilshift", ast.Mod: "$imod"}

@@ -1,5 +1,5 @@
 """Run one prepared program on a fresh board, inside the program's own confined process (a child
-of the template, worker.py), and make the answer it sends (`answer`: a put log and an outcome).
+of the template, template.py), and make the answer it sends (`answer`: a put log and an outcome).
 
 The program's globals (namespace()) are `__name__`, `board`, `put`, `init_board`; under PAPER
 semantics namespaces.paper splits them into the authors' globals and locals. Its `__builtins__` is BUILTINS (no
@@ -21,7 +21,7 @@ stop or refusal is the verdict even when the program swallowed it (budget.STOPPE
 counter; a RecursionError or MemoryError seen by a finally body, `$final`). No internal error
 ever ends as `ok` (it is `harness_error` here, and the parent makes it the program's
 `runtime_error`: the process is the program's, verdict.py). The process runs one program and
-exits (worker.py): nothing here needs resetting for a next one.
+exits (template.py): nothing here needs resetting for a next one.
 """
 from __future__ import annotations
 
@@ -34,15 +34,16 @@ from operator import length_hint
 
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, Board, ErrorCode, WorldError, put
 
-from . import budget, conversions, formatting, namespaces
-from .allowed import ALLOWED_BUILTINS, DENIED
-from .budget import Forbidden, Limit
-from .execution import MODULE, PAPER, clean, not_a_str
-from .instrument import prepare
-from . import attributes, chance
-from .classes import SERIALS, program_hash
-from .records import build_class
-from .modules import forget_typing, import_module, load
+from ..standins import budget, conversions, formatting
+from . import namespaces
+from ..check.allowed import ALLOWED_BUILTINS, DENIED
+from ..standins.budget import Forbidden, Limit
+from ..execution import MODULE, PAPER, clean, not_a_str
+from ..check.instrument import prepare
+from ..standins import attributes, chance
+from ..standins.classes import SERIALS, program_hash
+from ..standins.records import build_class
+from ..standins.modules import forget_typing, import_module, load
 from .result import checked
 
 MESSAGE_CHARS = 400
@@ -199,7 +200,7 @@ def run(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE, 
 
 
 def answer(source, rows: int, cols: int, limits, semantics: str = MODULE) -> bytes:
-    """What a child sends its template for one program (worker.py): ASCII JSON
+    """What a child sends its template for one program (template.py): ASCII JSON
     [ok, code or None, message, rows, cols, log], `log` the puts of the result board as one flat
     list shape, colour, x, y, shape, ... of plain str and int. The parent replays the log and
     decides the board (verdict.py): nothing else of the child's board leaves it."""
