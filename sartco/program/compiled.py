@@ -46,7 +46,7 @@ def _depth() -> int:
 def _at_headroom(source: str, limits: Limits, thread: bool = False) -> tuple:
     """runtime.compile_program(source, limits) with REMAINING frames of headroom: deeper calls
     pad the stack up to it, a caller already deeper runs it in a fresh thread."""
-    from .runtime import compile_program
+    from .child.runtime import compile_program
 
     depth = _depth()  # as runtime._depth() counts it in this frame
     target = sys.getrecursionlimit() - REMAINING
@@ -63,9 +63,10 @@ def _at_headroom(source: str, limits: Limits, thread: bool = False) -> tuple:
 
 def prepare(source: str, rows: int, cols: int, limits: Limits, semantics: str = MODULE) -> bytes | Execution:
     """The template's item for one program (a line: base64 of the marshalled (code, source), the
-    source only under the paper protocol, where the program sees its own text), or the Execution
-    of a program that never runs (refused, or a compile longer than the wall time)."""
-    from .runtime import encode
+    source only under the paper protocol, where the program sees its own text; code None: compile
+    it in the child; child/runtime.answer_item reads it), or the Execution of a program that never
+    runs (refused, or a compile longer than the wall time)."""
+    from .child.runtime import encode
     from .verdict import decide
 
     start = time.perf_counter()
@@ -83,10 +84,3 @@ def _frozensets(code) -> bool:
     """Whether the code (or a function in it) has a frozenset constant."""
     return any(type(const) is frozenset or (hasattr(const, "co_consts") and _frozensets(const))
                for const in code.co_consts)
-
-
-def answer(runtime, item: bytes, rows: int, cols: int, limits: Limits, semantics: str) -> bytes:
-    """In the child, after its walls: the answer (runtime.answer) of one item that prepare made."""
-    code, source = marshal.loads(base64.b64decode(item))
-    compiled = (code, None, "") if code is not None else runtime.compile_program(source, limits)
-    return runtime.answer(compiled, rows, cols, limits, semantics, source)

@@ -6,7 +6,7 @@ counts the CPU of that process and of the children it reaped (os.times), per pro
   template  the same loop in a template (worker.Template: its imports, its frozen heap)
   walls     Template.fork of nothing: the child's descriptors, rlimits, seccomp filter and CONFINED,
             the template's pipe, pidfd and wait
-  program   Template.fork of the program as the parent compiled it (compiled.answer): load the
+  program   Template.fork of the program as the parent compiled it (runtime.answer_item): load the
             code, run it, replay the board, write the answer, exit: the child as it runs today
   compiled in the child (before issue 46): the same, parsed, checked and compiled in the child
 The parent's side is timed in the calling process (warm, no fork): compiled.prepare (parse,
@@ -26,8 +26,8 @@ import time
 from sartco.settings import IMPORT_ROOT
 
 from . import compiled
-from .confine import compile_filter
-from .driver import HASH_SEED, ISOLATED
+from .child.confine import compile_filter
+from .handle import HASH_SEED, ISOLATED
 from .execution import MODULE, Limits
 from .verdict import decide
 
@@ -70,7 +70,7 @@ def stage(name: str, job: dict) -> tuple[float, float, list[str]]:
     and the answers of stage "program" (base64)."""
     import base64
 
-    from .worker import Template
+    from .child.template import Template
 
     template = Template(base64.b64decode(job["bpf"]))
     runtime, limits = template.runtime, Limits()
@@ -86,7 +86,7 @@ def stage(name: str, job: dict) -> tuple[float, float, list[str]]:
     answers: list[str] = []
 
     def program(k):
-        how, status, answer = template.fork(lambda: compiled.answer(runtime, items[k], 8, 8, limits, MODULE), limits)
+        how, status, answer = template.fork(lambda: runtime.answer_item(items[k], 8, 8, limits, MODULE), limits)
         answers.append(base64.b64encode(answer).decode())
 
     run = {

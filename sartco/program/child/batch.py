@@ -1,4 +1,4 @@
-"""The sandbox's mode "gold" (worker.py): the harness's own gold programs of one chunk in one child.
+"""The sandbox's mode "gold" (template.py): the harness's own gold programs of one chunk in one child.
 
 It is for the harness's own reference programs alone (an instance's gold function at the
 probes' candidate arguments, sartco.clem.core.probes), never a model's: the chunk's programs run
@@ -23,7 +23,7 @@ from types import ModuleType
 from typing import TYPE_CHECKING, Callable, Iterable, Protocol
 
 if TYPE_CHECKING:
-    from .execution import Limits
+    from ..execution import Limits
 
 
 class Template(Protocol):
@@ -77,16 +77,14 @@ def outcome(answer: bytes) -> str | None:
 
 def run(template: Template, items: list[bytes], rows: int, cols: int, limits: Limits,
         semantics: str) -> list[tuple[bytes, int, bytes]]:
-    """(how, status, answer) per item (a program as the parent compiled it, compiled.py), as the
+    """(how, status, answer) per item (a program as the parent compiled it, sartco/program/compiled.py), as the
     template reports them: the items in one child; from the first answer that the programs
     before it could have changed (or none came), each in a child of its own."""
-    from . import compiled
-
     runtime = template.runtime
 
     def work() -> Iterator[bytes]:
         for item in items:
-            answer = compiled.answer(runtime, item, rows, cols, limits, semantics)
+            answer = runtime.answer_item(item, rows, cols, limits, semantics)
             yield len(answer).to_bytes(4, "big") + answer
 
     walls = replace(limits, wall_time=limits.wall_time * len(items))  # the CPU rlimit covers the chunk
@@ -96,5 +94,5 @@ def run(template: Template, items: list[bytes], rows: int, cols: int, limits: Li
         if outcome(answer) in UNSURE:
             break
         done.append((b"exit", 0, answer))
-    return done + [template.fork(partial(compiled.answer, runtime, item, rows, cols, limits, semantics), limits)
+    return done + [template.fork(partial(runtime.answer_item, item, rows, cols, limits, semantics), limits)
                    for item in items[len(done):]]
