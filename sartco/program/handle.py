@@ -50,6 +50,7 @@ _BOOT = (
     "from sartco.program.child.template import main; sys.exit(main(int(sys.argv[2]), '--breach' in sys.argv[3:]))"
 )
 HOWS = (b"exit", b"signal", b"timeout", b"overflow", b"unconfined")
+SHARED = ("gold", "answer")  # modes whose chunk runs in one child (child/batch.py)
 
 
 class _Dead(Exception):
@@ -126,13 +127,13 @@ class TemplateHandle:
             self.lines.extend(parts)
         return self.lines.popleft()
 
-    def _send(self, stdin, items: list[bytes], rows: int, cols: int, limits: Limits, semantics: str, mode: str):
-        """Write the items in chunks. For more than fits in the pipe at once this runs in a thread
-        of its own: the template finds its next chunk waiting when it finishes one, and a full pipe
-        never blocks the reading of answers."""
+    def _send(self, stdin, items: list[bytes], rows: int, cols: int, limits: Limits, semantics: str, mode: str,
+              starts: frozenset[int] = frozenset()):
+        """Write the items in chunks (of CHUNK at most; a new one at each index of `starts`). For
+        more than fits in the pipe at once this runs in a thread of its own: the template finds its
+        next chunk waiting when it finishes one, and a full pipe never blocks the reading of answers."""
         try:
-            for k in range(0, len(items), CHUNK):
-                chunk = items[k:k + CHUNK]
+            for chunk in _chunks(items, starts):
                 header = json.dumps({"limits": limits.as_list(), "rows": rows, "cols": cols, "semantics": semantics,
                                      "items": len(chunk), "mode": mode}).encode()
                 stdin.write(b"\n".join([header, *chunk]) + b"\n")
@@ -141,11 +142,15 @@ class TemplateHandle:
             pass  # the template died or was killed: the reader finds out and reports it
 
     def run(self, items: list[bytes], rows: int, cols: int, limits: Limits, semantics: str = MODULE,
-            mode: str = "code") -> list[Execution]:
-        """One Execution per item (a program's source as a JSON string), in order."""
+            mode: str = "code", starts: frozenset[int] = frozenset()) -> list[Execution]:
+        """One Execution per item (a program as compiled.prepare made it), in order. In the modes
+        whose chunk shares a child (SHARED), a chunk starts at each index of `starts` too (one
+        answer's programs), and its first answer may take the whole chunk's wall time, twice."""
         results: list[Execution] = []
         while len(results) < len(items):
             todo = items[len(results):]
+            rest = frozenset(k - len(results) for k in starts if k > len(results))
+            patience = limits.wall_time * (2 * max(map(len, _chunks(todo, rest))) if mode in SHARED else 1) + SLACK
             try:
                 if self.proc is None:
                     self.start()
@@ -153,7 +158,7 @@ class TemplateHandle:
                 self.kill()
                 results.extend(failed(ErrorCode.HARNESS_ERROR, f"sandbox unavailable: {exc}") for _ in todo)
                 break
-            send = (self.proc.stdin, todo, rows, cols, limits, semantics, mode)
+            send = (self.proc.stdin, todo, rows, cols, limits, semantics, mode, rest)
             writer = None
             if len(todo) <= CHUNK and sum(map(len, todo)) + 4096 < self.room:
                 self._send(*send)  # one chunk that fits in the empty pipe: the write cannot block
@@ -162,7 +167,7 @@ class TemplateHandle:
                 writer.start()
             for _ in todo:
                 try:
-                    line = self._readline(time.monotonic() + limits.wall_time + SLACK)
+                    line = self._readline(time.monotonic() + patience)
                     fault = None if line is not None else "the sandbox worker did not answer in time"
                 except (_Dead, OSError):
                     line, fault = None, f"the sandbox worker ended unexpectedly (status {self.kill()})"
@@ -179,6 +184,16 @@ class TemplateHandle:
             if writer is not None:
                 writer.join()  # done, or unblocked by the kill (a closed pipe)
         return results
+
+
+def _chunks(items: list[bytes], starts: frozenset[int]) -> list[list[bytes]]:
+    """The items in chunks of CHUNK at most, a new one at each index of `starts`."""
+    chunks: list[list[bytes]] = []
+    for k, item in enumerate(items):
+        if not chunks or k in starts or len(chunks[-1]) == CHUNK:
+            chunks.append([])
+        chunks[-1].append(item)
+    return chunks
 
 
 def _answer(line: bytes, limits: Limits) -> Execution | None:

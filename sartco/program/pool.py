@@ -36,6 +36,7 @@ from .verdict import failed
 
 BATCH = 32  # a call with fewer items than this uses one template
 GOLD = "gold"  # execute_many's mode for the harness's own reference programs (child/template.py)
+ANSWER = "answer"  # execute_many's mode for the programs of model answers, each answer's in one child (groups)
 MEMO = 50_000  # verdicts a LocalSandbox keeps for repeated programs (a few KB each)
 TRANSIENT = frozenset({ErrorCode.TIMEOUT, ErrorCode.RESOURCE_LIMIT, ErrorCode.HARNESS_ERROR})
 MemoKey = tuple[str, int, int, Limits, str, str]  # source, rows, cols, limits, semantics, mode
@@ -98,28 +99,36 @@ class LocalSandbox:
                         template.kill()
 
     def dispatch(self, items: list[bytes], rows: int, cols: int, limits: Limits, workers: int | None = None,
-                 semantics: str = MODULE, mode: str = "code") -> list[Execution]:
-        """Run items (sources as JSON strings) on the templates; Executions in input order."""
+                 semantics: str = MODULE, mode: str = "code", groups: list | None = None) -> list[Execution]:
+        """Run items (compiled.prepare's) on the templates; Executions in input order. `groups`
+        (mode ANSWER): one label per item; consecutive items of one label go to one template, in
+        one chunk of their own."""
         results: list = [None] * len(items)
         n = max(1, min(workers or self.workers or default_workers(), -(-len(items) // BATCH)))
         shares: list[list[int]] = [[] for _ in range(n)]
+        starts: list[set[int]] = [set() for _ in range(n)]
         load = [0] * n
+        w = 0
         for i, item in enumerate(items):
-            w = load.index(min(load))
+            if groups is None or i == 0 or groups[i] != groups[i - 1]:
+                w = load.index(min(load))
+                starts[w].add(len(shares[w]))
             shares[w].append(i)
             load[w] += len(item)
 
-        def drive(template: TemplateHandle, share: list[int]):
+        def drive(template: TemplateHandle, share: list[int], start: set[int]):
             with template.lock:
-                answers = template.run([items[i] for i in share], rows, cols, limits, semantics, mode)
+                answers = template.run([items[i] for i in share], rows, cols, limits, semantics, mode,
+                                       frozenset(start) if groups is not None else frozenset())
                 for i, answer in zip(share, answers):
                     results[i] = answer
 
         templates = self.templates(n)
         if n == 1:
-            drive(templates[0], shares[0])
+            drive(templates[0], shares[0], starts[0])
         else:
-            threads = [threading.Thread(target=drive, args=(t, sh), daemon=True) for t, sh in zip(templates, shares)]
+            threads = [threading.Thread(target=drive, args=(t, sh, st), daemon=True)
+                       for t, sh, st in zip(templates, shares, starts)]
             for t in threads:
                 t.start()
             for t in threads:
@@ -128,12 +137,15 @@ class LocalSandbox:
 
     def execute_many(self, programs, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, limits: Limits | None = None,
                      *, workers: int | None = None, cache: bool = True, semantics: str = MODULE,
-                     mode: str = "code") -> list[Execution]:
+                     mode: str = "code", answers: list | None = None) -> list[Execution]:
         """Run many programs, each in its own confined process on its own fresh board; results in
         input order. `semantics`: MODULE (a script's namespace) or PAPER (the authors' exec, see
         namespaces.py). `mode` GOLD: the harness's own reference programs (an instance's gold
-        code, never a model's), which may share a child per chunk (child/template.py, mode "gold"); their
-        verdicts are those of mode "code" and are kept as such."""
+        code, never a model's), which may share a child per chunk (child/template.py, mode "gold").
+        `answers` (one label per program: the model answer it belongs to, e.g. the K probes of
+        one answer): the programs of one answer may share a child, never with another answer's
+        (mode ANSWER, child/batch.py). The verdicts of both are those of mode "code" and are kept
+        as such."""
         if semantics not in SEMANTICS:
             raise ValueError(f"unknown semantics {semantics!r}; expected one of {', '.join(SEMANTICS)}")
         try:
@@ -144,7 +156,9 @@ class LocalSandbox:
             except WorldError as exc:
                 return [failed(exc.code, exc.message) for _ in programs]
             results: list = [None] * len(programs)
-            kept = "code" if mode == GOLD else mode  # the memo's mode: a gold verdict is a code one
+            if answers is not None and mode == "code":
+                mode = ANSWER
+            kept = "code" if mode in (GOLD, ANSWER) else mode  # the memo's mode: theirs are code verdicts
             first: dict[str, int] = {}  # source -> the index of the item that runs it (cache)
             todo, copies = [], []
             for i, p in enumerate(programs):
@@ -162,8 +176,9 @@ class LocalSandbox:
                     compiled.prepare(programs[i], rows, cols, limits, semantics) for i in todo}
             run = [i for i in todo if type(made[i]) is bytes]
             items = [made[i] for i in run]
-            answers = dispatch(self, items, rows, cols, limits, workers, semantics, mode) if items else []
-            made.update(zip(run, answers))
+            groups = None if mode != ANSWER or answers is None else [answers[i] for i in run]
+            ran = dispatch(self, items, rows, cols, limits, workers, semantics, mode, groups) if items else []
+            made.update(zip(run, ran))
             for i in todo:
                 results[i] = answer = made[i]
                 if cache and type(answer) is Execution:
@@ -182,9 +197,10 @@ class LocalSandbox:
         return self.execute_many([code], rows, cols, limits, workers=1, semantics=semantics)[0]
 
 
-def dispatch(sandbox: LocalSandbox, items, rows, cols, limits, workers=None, semantics=MODULE, mode="code") -> list:
+def dispatch(sandbox: LocalSandbox, items, rows, cols, limits, workers=None, semantics=MODULE, mode="code",
+             groups=None) -> list:
     """The one way execute_many reaches the templates (tests put a failing one here)."""
-    return sandbox.dispatch(items, rows, cols, limits, workers, semantics, mode)
+    return sandbox.dispatch(items, rows, cols, limits, workers, semantics, mode, groups)
 
 
 _local: LocalSandbox | None = None

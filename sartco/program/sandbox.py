@@ -63,12 +63,14 @@ def execute(code: str, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, limit
 
 def execute_many(programs: Iterable[str], rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, limits: Limits | None = None, *,
                  workers: int | None = None, cache: bool = True, semantics: str = MODULE,
-                 gold: bool = False) -> list[Execution]:
-    """Run many programs in the sandbox in use, results in input order. `workers`, `cache` and
-    `gold` (the programs are the harness's own reference code, never a model's: pool.GOLD) are
-    the local sandbox's (pool.LocalSandbox.execute_many); another sandbox ignores them."""
+                 gold: bool = False, answers: list | None = None) -> list[Execution]:
+    """Run many programs in the sandbox in use, results in input order. `workers`, `cache`,
+    `gold` (the programs are the harness's own reference code, never a model's: pool.GOLD) and
+    `answers` (a label per program: the model answer it is part of; one answer's programs may
+    share a child: pool.ANSWER) are the local sandbox's (pool.LocalSandbox.execute_many);
+    another sandbox ignores them."""
     box = current()
     if isinstance(box, LocalSandbox):
         return box.execute_many(programs, rows, cols, limits, workers=workers, cache=cache, semantics=semantics,
-                                mode=GOLD if gold else "code")
+                                mode=GOLD if gold else "code", answers=None if gold else answers)
     return box.execute_many(programs, rows, cols, limits, semantics=semantics)

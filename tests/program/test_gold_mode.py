@@ -1,6 +1,6 @@
 """Mode "gold" (child/template.py): the harness's own reference programs of one batch share a confined
-child, and every verdict equals the one a child per program gives; a model's program never
-shares a child (the probes run a model's function in mode "code").
+child, and every verdict equals the one a child per program gives; a model's program shares a
+child only with the other probes of its own answer (mode "answer", test_answer_mode.py).
 """
 import pytest
 
@@ -111,14 +111,16 @@ class Spy(pool.LocalSandbox):
     def __init__(self):
         super().__init__(workers=1)
         self.modes: list[tuple[str, str]] = []
+        self.answers: list = []
 
-    def execute_many(self, programs, *args, mode="code", **kwargs):
+    def execute_many(self, programs, *args, mode="code", answers=None, **kwargs):
         programs = list(programs)
-        self.modes += [(p, mode) for p in programs]
-        return super().execute_many(programs, *args, mode=mode, **kwargs)
+        self.modes += [(p, pool.ANSWER if answers is not None and mode == "code" else mode) for p in programs]
+        self.answers += answers or [None] * len(programs)
+        return super().execute_many(programs, *args, mode=mode, answers=answers, **kwargs)
 
 
-def test_a_models_function_never_shares_a_child():
+def test_a_models_function_shares_a_child_only_with_its_own_answers_probes():
     from sartco.program import use
 
     instance = {"task": "optimal_function", "board_id": "b1", "rows": 8, "cols": 8, "combo_name": "n",
@@ -136,5 +138,6 @@ def test_a_models_function_never_shares_a_child():
     assert result["share"] == 1.0 and len(result["probes"]) == 4
     model = [m for p, m in spy.modes if "def mine" in p]
     gold = [m for p, m in spy.modes if "def build" in p]
-    assert model == ["code"] * 4
+    assert model == [pool.ANSWER] * 4  # one answer's probes: one label (tests/program/test_answer_mode.py)
+    assert len({a for (p, _), a in zip(spy.modes, spy.answers) if "def mine" in p}) == 1
     assert gold and set(gold) == {pool.GOLD}

@@ -213,8 +213,8 @@ def run_probes_many(jobs: list[tuple[dict, str, GoldDraws]]) -> list[dict | Harn
     size, in input order; an answer whose probe the sandbox failed gets its HarnessFault."""
     from .sandbox import judge, run_many
 
-    plans, batches = [], {}
-    for instance, code, gold in jobs:
+    plans, batches, labels = [], {}, {}
+    for job, (instance, code, gold) in enumerate(jobs):
         given, rows, cols = instance["given_code"], instance["rows"], instance["cols"]
         name = probed_function(code, given)
         programs = [] if name is None else [probe_program(code, name, a, given_code=given, rows=rows, cols=cols)
@@ -222,7 +222,8 @@ def run_probes_many(jobs: list[tuple[dict, str, GoldDraws]]) -> list[dict | Harn
         batch = batches.setdefault((rows, cols), [])
         plans.append((name, len(batch), len(programs)))
         batch.extend(programs)
-    runs = {size: run_many(programs, *size) for size, programs in batches.items()}
+        labels.setdefault((rows, cols), []).extend([job] * len(programs))  # one answer's probes may share a child
+    runs = {size: run_many(programs, *size, answers=labels[size]) for size, programs in batches.items()}
     out: list[dict | HarnessFault] = []
     for (instance, code, gold), (name, start, n) in zip(jobs, plans):
         source = None if name is None else ("model" if name in _top_defs(_parse(code)) else "given")

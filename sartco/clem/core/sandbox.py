@@ -11,11 +11,14 @@ from sartco.program import Execution, current, execute_many, judge
 __all__ = ["run_many", "judge", "restart"]
 
 
-def run_many(programs: list[str], rows: int, cols: int, *, gold: bool = False) -> list[Execution]:
+def run_many(programs: list[str], rows: int, cols: int, *, gold: bool = False,
+             answers: list | None = None) -> list[Execution]:
     """Each program on its own fresh rows x cols board, results in input order. `gold`: the
     programs are an instance's gold code at the probes' candidate arguments, never a model's (the
-    local sandbox runs a batch of them in one confined child: sartco.program.child.template, mode "gold")."""
-    return execute_many(programs, rows, cols, gold=gold) if programs else []
+    local sandbox runs a batch of them in one confined child: sartco.program.child.template, mode "gold").
+    `answers`: a label per program, the model answer it is part of (the local sandbox runs one
+    answer's programs in one confined child, never with another answer's: mode "answer")."""
+    return execute_many(programs, rows, cols, gold=gold, answers=answers) if programs else []
 
 
 def restart() -> None:

@@ -1,17 +1,22 @@
-"""The sandbox's mode "gold" (template.py): the harness's own gold programs of one chunk in one child.
+"""The sandbox's modes "gold" and "answer" (template.py): the programs of one chunk in one child.
 
-It is for the harness's own reference programs alone (an instance's gold function at the
-probes' candidate arguments, sartco.clem.core.probes), never a model's: the chunk's programs run
-one after another in ONE confined child, each on its own fresh board and namespace with its own
-budgets, each answer framed (4-byte length + answer) and written as it finishes; every item has
-Limits.wall_time from the end of the one before. The walls are the same (the CPU rlimit covers
-the chunk). Answers equal those of a child per program: a program's verdict depends only on its
-source, board and budgets. What could depend on the programs before it in the same process (a
-`timeout` or `resource_limit` answer, a child that ended or was killed before the last answer)
-is not used: that item and every one after it run again, each in a child of its own, as in mode
-"code". Why: a fork, its page faults and its exit cost about 2 ms here, a probe candidate's
-run 0.15-0.3 ms, and a board's probe draw runs about 21 candidates (sartco.clem.core.probes);
-the 1,560 draws of the paper protocol took 29.0 s a child per program, 7.6 s a child per round.
+Mode "gold" is for the harness's own reference programs (an instance's gold function at the
+probes' candidate arguments, sartco.clem.core.probes); mode "answer" for the programs of ONE
+model answer (its function probes: the parent never puts two answers in one chunk, pool.py).
+Sharing a child within one answer gives that answer nothing: in each of its processes a program
+already decides what it builds, and the walls between answers, models and the host are the
+same. The chunk's programs run one after another in ONE confined child, each on its own fresh
+board and namespace with its own budgets (runtime.RAN: np, typing's caches, random and the
+serials afresh), each answer framed (4-byte length + answer) and written as it finishes; every
+item has Limits.wall_time from the end of the one before. The walls are the same (the CPU rlimit
+covers the chunk). Answers equal those of a child per program: a program's verdict depends only
+on its source, board and budgets. What could depend on the programs before it in the same
+process (a `timeout` or `resource_limit` answer, a child that ended or was killed before the
+last answer) is not used: that item and every one after it run again, each in a child of its
+own, as in mode "code". Why: a fork, its page faults and its exit cost about 2 ms here, a probe
+candidate's run 0.15-0.3 ms; a board's probe draw runs about 21 candidates and an answer's
+probes 8 programs (the 1,560 draws of the paper protocol took 29.0 s a child per program, 7.6 s
+a child per round).
 """
 from __future__ import annotations
 

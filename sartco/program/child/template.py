@@ -1,15 +1,15 @@
 """The template process: it imports what programs need, builds the kernel's walls, runs no
 program itself, and forks one confined child per program. The child runs that one program and
-exits, so nothing a program does outlives it: no process runs a second program of a model (only
-the harness's own gold programs of one batch may share a child: mode "gold" below).
+exits, so nothing a program does outlives it: no process runs programs of two answers (only
+one answer's probes, mode "answer", or the harness's gold programs of a batch, "gold", share one).
 
 Protocol with the parent (driver.py), lines of bytes:
   parent -> template, once at start: the seccomp filter, a BPF program in base64 (confine.py)
   template -> parent, once at start: "ready", or "unconfined: <why>" (then it exits: the kernel's
       walls cannot be built here, and no program runs unconfined)
   parent -> template, per chunk: a header {"limits": [...Limits fields...], "rows": R, "cols": C,
-      "semantics": "module" | "paper", "items": K, "mode": "code" | "gold" | "breach"}, then K lines, each a
-      program's source as a JSON string
+      "semantics": "module" | "paper", "items": K, "mode": "code" | "gold" | "answer" | "breach"}, then K
+      lines, each a program as the parent compiled it (runtime.answer_item; "breach": a JSON string)
   template -> parent, one line per item, in order: b"<how> <status> <answer as base64>", where
       <how> is how the child ended: "exit" (status: its exit status), "signal" (status: the signal
       that killed it), "timeout" (killed at Limits.wall_time), "overflow" (killed: it wrote more
@@ -17,7 +17,7 @@ Protocol with the parent (driver.py), lines of bytes:
 The template decides nothing about the program: the parent reads the child's answer (a put log
 of plain values and an outcome, see runtime.answer) and decides the board (verdict.py).
 
-Mode "gold" (batch.py): the harness's own gold programs of one chunk in one child.
+Modes "gold" and "answer" (batch.py): the chunk's programs in one child.
 
 The child, between fork and the program's first line (`_child`): its descriptors become /dev/null
 (0, 1, 2) and its answer pipe (3), every other one closed; then the rlimits, death with the
@@ -254,7 +254,7 @@ class Template:
             mode = request.get("mode")
             breach = mode == "breach"
             items = [inp.readline() for _ in range(request["items"])]
-            if mode == "gold":
+            if mode in ("gold", "answer"):  # one chunk in one child (batch.py)
                 for how, status, answer in batch.run(self, items, rows, cols, limits, semantics):
                     out.write(b"%s %d %s\n" % (how, status, base64.b64encode(answer)))
                 out.flush()
