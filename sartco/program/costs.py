@@ -1,17 +1,21 @@
 """Where a program's CPU goes (issue 46): `sartco bench-execute --breakdown` prints it beside the floor.
 
-Each stage forks one child per program of the corpus in a fresh process pinned to one core, and
-counts the CPU of that process and of the children it reaped (os.times), per program:
+Each stage runs the corpus's programs in a fresh process pinned to one core, and counts the CPU
+and the page faults of that process and of the children it reaped (os.times, getrusage), per
+program:
   floor     a bare `python -S` that forks with libc's fork() and reaps; the child only _exit(0)s
-  template  the same loop in a template (worker.Template: its imports, its frozen heap)
-  walls     Template.fork of nothing: the child's descriptors, rlimits, seccomp filter and CONFINED,
-            the template's pipe, pidfd and wait
-  program   Template.fork of the program as the parent compiled it (runtime.answer_item): load the
-            code, run it, replay the board, write the answer, exit: the child as it runs today
-  compiled in the child (before issue 46): the same, parsed, checked and compiled in the child
+  template  a template (child.template.Template: its imports, its frozen heap) that reads a
+            program's line, forks, reaps and writes a line, as it does per program; the child
+            only _exit(0)s
+  walls     Template.fork of nothing: the child's descriptors, rlimits, seccomp filter and
+            CONFINED, the template's pipe, pidfd and wait
+  program   Template.fork of the program as the parent compiled it (runtime.answer_item): load
+            the code, run it, check the board, write the answer, exit: the child as it runs now
+  compiled in the child   the same, parsed, checked and compiled in the child (before issue 46)
 The parent's side is timed in the calling process (warm, no fork): compiled.prepare (parse,
 check, instrument, compile, marshal) and verdict.decide (replay the answer's log on the parent's
-board). A template's stage process runs as a template does (driver.ISOLATED, PYTHONHASHSEED=0).
+board). A stage process runs as a template does (handle.ISOLATED, PYTHONHASHSEED=0) and reads
+its programs line by line, as a template reads a chunk.
 """
 from __future__ import annotations
 
@@ -48,11 +52,11 @@ t = os.times()
 print(t[4] - start[4], sum(t[:4]) - sum(start[:4]), faults() - before)
 """
 _STAGE = """
-import base64, json, os, sys
+import os, sys
 sys.path.insert(0, sys.argv[1])
 os.sched_setaffinity(0, {int(sys.argv[3])})
 from sartco.program.costs import stage
-print(json.dumps(stage(sys.argv[2], json.loads(sys.stdin.read()))))
+sys.exit(stage(sys.argv[2], sys.stdin.buffer, sys.stdout.buffer))
 """
 
 
@@ -65,42 +69,41 @@ def floor(n: int, core: int = 0) -> tuple[float, float, int]:
     return float(wall), float(cpu), int(faults)
 
 
-def stage(name: str, job: dict) -> tuple[float, float, list[str]]:
-    """In a stage process: CPU ms and page faults per program of one stage over job's programs,
-    and the answers of stage "program" (base64)."""
+def stage(name: str, inp, out) -> int:
+    """In a stage process, as a template reads and answers: the filter (a line of base64), then a
+    line per program (JSON [source, item]); writes the answer of each (stage "program": base64;
+    the others: an empty line), then the CPU ms and page faults per program (JSON)."""
     import base64
 
     from .child.template import Template
 
-    template = Template(base64.b64decode(job["bpf"]))
+    template = Template(base64.b64decode(inp.readline()))
     runtime, limits = template.runtime, Limits()
-    sources, items = job["sources"], [item.encode() for item in job["items"]]
     fork = template._fork
 
-    def bare(_):
+    def bare(source, item):
         pid = fork()
         if pid == 0:
             os._exit(0)
         os.waitpid(pid, 0)
-
-    answers: list[str] = []
-
-    def program(k):
-        how, status, answer = template.fork(lambda: runtime.answer_item(items[k], 8, 8, limits, MODULE), limits)
-        answers.append(base64.b64encode(answer).decode())
+        return b""
 
     run = {
         "template": bare,
-        "walls": lambda k: template.fork(lambda: b"", limits),
-        "program": program,
-        "compiled in the child": lambda k: template.fork(
-            lambda: runtime.answer(runtime.compile_program(sources[k], limits), 8, 8, limits, MODULE), limits),
+        "walls": lambda source, item: template.fork(lambda: b"", limits)[2],
+        "program": lambda source, item: template.fork(
+            lambda: runtime.answer_item(item, 8, 8, limits, MODULE), limits)[2],
+        "compiled in the child": lambda source, item: template.fork(
+            lambda: runtime.answer(runtime.compile_program(source, limits), 8, 8, limits, MODULE), limits)[2],
     }[name]
-    start, faults = os.times(), _faults()
-    for k in range(len(sources)):
-        run(k)
+    start, faults, n = os.times(), _faults(), 0
+    while line := inp.readline():
+        source, item = json.loads(line)
+        out.write(base64.b64encode(run(source, item.encode())) + b"\n")
+        n += 1
     end, faults = os.times(), _faults() - faults
-    return (sum(end[:4]) - sum(start[:4])) / len(sources) * 1e3, faults / len(sources), answers
+    out.write(json.dumps([(sum(end[:4]) - sum(start[:4])) / max(1, n) * 1e3, faults / max(1, n)]).encode() + b"\n")
+    return 0
 
 
 def _faults() -> int:
@@ -118,8 +121,8 @@ def breakdown(sources: list[str], rounds: int = 3, core: int = 0) -> dict[str, f
     items = [compiled.prepare(s, 8, 8, limits) for s in sources]
     keep = [k for k, item in enumerate(items) if type(item) is bytes]  # the programs that run
     sources = [sources[k] for k in keep]
-    job = json.dumps({"bpf": base64.b64encode(compile_filter()).decode(), "sources": sources,
-                      "items": [items[k].decode() for k in keep]})
+    job = base64.b64encode(compile_filter()) + b"\n" + b"".join(
+        json.dumps([sources[n], items[k].decode()]).encode() + b"\n" for n, k in enumerate(keep))
     env = {k: v for k, v in os.environ.items() if not k.startswith("PYTHON")} | {"PYTHONHASHSEED": HASH_SEED}
     seen: dict[str, list[float]] = {name: [] for name in (*STAGES, *(f"{s} faults" for s in STAGES),
                                                           "parent: compile", "parent: verdict")}
@@ -130,11 +133,12 @@ def breakdown(sources: list[str], rounds: int = 3, core: int = 0) -> dict[str, f
         answers: list[bytes] = []
         for name in STAGES[1:]:
             out = subprocess.run([sys.executable, *ISOLATED, "-c", _STAGE, str(IMPORT_ROOT), name, str(core)],
-                                 input=job, capture_output=True, text=True, check=True, env=env, cwd="/")
-            ms, faults, made = json.loads(out.stdout)
+                                 input=job, capture_output=True, check=True, env=env, cwd="/").stdout.splitlines()
+            ms, faults = json.loads(out[-1])
             seen[name].append(ms)
             seen[name + " faults"].append(faults)
-            answers += [base64.b64decode(a) for a in made]
+            if name == "program":
+                answers = [base64.b64decode(a) for a in out[:-1]]
         cpu = time.process_time()
         for s in sources:
             compiled.prepare(s, 8, 8, limits)
