@@ -71,6 +71,18 @@ def main(argv: list[str] | None = None) -> int:
             return 2
         os.environ["SARTCO_DATA"] = data
     chosen = next((a for a in rest if not a.startswith("-")), None)
+    try:
+        return _run(parser, sub, argv, chosen)
+    except UserError as exc:
+        print(f"sartco {chosen}: {exc}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt as exc:
+        print(f"sartco {chosen}: interrupted (Ctrl-C){': ' + str(exc) if str(exc) else ''}", file=sys.stderr)
+        return INTERRUPTED
+
+
+def _run(parser: argparse.ArgumentParser, sub, argv: list[str], chosen: str | None) -> int:
+    """The chosen command's module imported and configured, its options read, its run."""
     modules = {}
     for name, (module, help_text) in COMMANDS.items():
         p = sub.add_parser(name, help=help_text, description=help_text, epilog=EPILOGS.get(name),
@@ -79,18 +91,11 @@ def main(argv: list[str] | None = None) -> int:
             module, _, suffix = module.partition(":")
             modules[name] = importlib.import_module(module), f"_{suffix}" if suffix else ""
             getattr(modules[name][0], "configure" + modules[name][1])(p)
-    try:
-        args, extra = parser.parse_known_args(argv)
-        if extra:  # said by the command's own parser: its usage line, not the top level's
-            sub.choices[args.command].error(f"unrecognized arguments: {' '.join(extra)}")
-        module, suffix = modules[args.command]
-        return int(getattr(module, "run" + suffix)(args) or 0)
-    except UserError as exc:
-        print(f"sartco {chosen}: {exc}", file=sys.stderr)
-        return 2
-    except KeyboardInterrupt as exc:
-        print(f"sartco {chosen}: interrupted (Ctrl-C){': ' + str(exc) if str(exc) else ''}", file=sys.stderr)
-        return INTERRUPTED
+    args, extra = parser.parse_known_args(argv)
+    if extra:  # said by the command's own parser: its usage line, not the top level's
+        sub.choices[args.command].error(f"unrecognized arguments: {' '.join(extra)}")
+    module, suffix = modules[args.command]
+    return int(getattr(module, "run" + suffix)(args) or 0)
 
 
 def _data_option(argv: list[str]) -> tuple[str | None, list[str]]:

@@ -48,7 +48,6 @@ from __future__ import annotations
 import argparse
 import contextlib
 import json
-import logging
 import os
 import re
 import shutil
@@ -61,8 +60,8 @@ from pathlib import Path
 from sartco.errors import UserError
 from sartco.clock import cpu_seconds
 from sartco.schedule import CLEM_SETTINGS, LOG, Done, Task, schedule
+from sartco.suite_worker import STAGE, run as play_or_prepare
 
-STAGE = ".suite"
 PAPER_SETTINGS = (0.0, 250)   # the paper protocol's -t and -l
 # the order in which ready plays start (the longest first), by game; the plan's order is clem eval's
 PRIORITY = ("cobot_instruct_paper", "cobot_instruct_published", "cobot_instruct_fresh", "cobot_instruct",
@@ -115,111 +114,6 @@ def only(tasks: list[Task], games: list[str] | None) -> list[Task]:
         if t.name in keep:
             keep.update(t.after)
     return [t for t in tasks if t.name in keep]
-
-
-# ---- in a worker process -------------------------------------------------------------------------
-
-def _prepare(argv: tuple) -> int:
-    if argv[0] == "sartco":
-        from sartco import cli
-        return cli.main(list(argv[1:]))
-    from sartco.instancegen.command import script_main
-    return script_main("cobot_instruct", Path("games/cobot_instruct").resolve(), list(argv[1:]))
-
-
-def _play(task: Task, results: Path) -> int:
-    """clem run, clem score and clem transcribe of one pair, in its stage folder; then into place.
-    A pair already in place is done; one half played (its run.json there) is completed by `sartco
-    resume` (which plays what is missing, scores and transcribes)."""
-    from clemcore import cli as clem_cli
-    from clemcore.backends import ModelSpec
-    from clemcore.clemgame import GameBenchmark, GameRegistry
-    from clemcore.clemgame.transcripts.builder import build_transcripts
-
-    from sartco.clem.core.benchmark import run_selector
-    from sartco.clem.core.provenance import RUN_FILE
-    from sartco.clem.tooling import resume
-
-    stage = results / STAGE / str(task.index)
-    run_dir = resume.run_folder([task.model])
-    target, game_dir = results / run_dir / task.game, stage / run_dir / task.game
-    if target.is_dir():
-        return 0
-    if (game_dir / RUN_FILE).is_file():
-        status = resume.run(argparse.Namespace(results=stage, game=task.game, models=[task.model], temperature=None,
-                                               max_tokens=None, batch_size=None))
-        if status:
-            return status
-    else:
-        shutil.rmtree(stage, ignore_errors=True)
-        temperature, max_tokens = task.settings
-        try:
-            clem_cli.run(run_selector(task.game, stage, batch_size=task.batch_size), ModelSpec.from_strings([task.model]),
-                         gen_args=dict(temperature=temperature, max_tokens=max_tokens), results_dir_path=stage,
-                         instances_filename=task.instances, batch_size=task.batch_size)
-        except SystemExit as exc:  # clemcore exits 1 after logging a game's exception; a bad instance file: 2
-            if exc.code:
-                return int(exc.code) if isinstance(exc.code, int) else 1
-        files = sorted(game_dir.rglob("interactions.json"))
-        spec = next(s for s in GameRegistry.from_directories_and_cwd_files().get_game_specs_that_unify_with(task.game)
-                    if s.game_name == task.game)
-        played = cpu_seconds()
-        with GameBenchmark.load_from_spec(spec) as bench:
-            bench.compute_scores(files)
-        scored = cpu_seconds()
-        build_transcripts(str(game_dir))
-        print(f"== suite: {task.name}: CPU s of scoring {scored - played:.1f}, of transcribing "
-              f"{cpu_seconds() - scored:.1f}", flush=True)
-    target.parent.mkdir(parents=True, exist_ok=True)
-    os.rename(game_dir, target)
-    return 0
-
-
-class _LastError(logging.Handler):
-    """The last error line of a task: what it wrote to stderr (a progress bar's redraw aside) or
-    logged at ERROR, its last line."""
-
-    def __init__(self, stream) -> None:
-        super().__init__(logging.ERROR)
-        self.stream, self.line = stream, ""
-
-    def keep(self, text: str) -> None:
-        lines = [line.strip() for line in str(text).splitlines() if line.strip()]
-        if lines:
-            self.line = lines[-1]
-
-    def emit(self, record: logging.LogRecord) -> None:
-        self.keep(record.getMessage())
-
-    def write(self, text: str) -> int:
-        if "\r" not in text:
-            self.keep(text)
-        return self.stream.write(text)
-
-    def flush(self) -> None:
-        self.stream.flush()
-
-
-def _run(task: Task, results: str) -> Done:
-    from sartco.clem.core.sandbox import restart
-
-    start, cpu = time.monotonic(), cpu_seconds()
-    print(f"== suite: {task.name}", flush=True)
-    last = _LastError(sys.stderr)
-    logging.getLogger().addHandler(last)
-    try:
-        with contextlib.redirect_stderr(last):  # type: ignore[type-var]
-            status = _prepare(task.argv) if task.kind == "prepare" else _play(task, Path(results))
-        message = "" if status == 0 else f"{last.line} (exit status {status})" if last.line else f"exit status {status}"
-    except BaseException as exc:  # noqa: BLE001 - the parent reports it and stops
-        traceback.print_exc()
-        status, message = 1, f"{type(exc).__name__}: {exc}"
-    finally:
-        logging.getLogger().removeHandler(last)
-        restart()  # the sandbox's templates end, so that their CPU time counts here
-        sys.stdout.flush()
-        sys.stderr.flush()
-    return Done(task.name, status == 0, time.monotonic() - start, cpu_seconds() - cpu, message)
 
 
 # ---- in the parent -------------------------------------------------------------------------------
@@ -376,7 +270,7 @@ def run(args: argparse.Namespace) -> int:
             print(lines[-1] if lines else "fresh boards: the generator's line is not in the log", flush=True)
 
     try:
-        finished = schedule(_run, tasks, max(1, args.workers), results, say, PRIORITY)
+        finished = schedule(play_or_prepare, tasks, max(1, args.workers), results, say, PRIORITY)
     except KeyboardInterrupt:
         raise KeyboardInterrupt(f"the episodes played are kept in {results}; the same command again plays only "
                                 f"what is missing") from None
