@@ -26,7 +26,7 @@ def _confined() -> str | None:
         return str(exc)
     worker = Worker()
     try:
-        worker.start()
+        worker.start()  # type: ignore[no-untyped-call]  # driver.py is not typed yet
     except _Dead as exc:
         return str(exc)
     finally:
