@@ -1,6 +1,6 @@
 """The walls the sandbox can raise on this machine (`sartco doctor`): one record per wall, up or
 not, and why. Provisional: seccomp and rlimits are up when a template can start confined (the
-filter compiles, confine.compile_filter, and the template's self-test answers "ready"); they stand
+filter compiles, child/confine.compile_filter, and the template's self-test answers "ready"); they stand
 or fall together, since the confined child takes both. The sandbox raises no namespaces yet.
 """
 from __future__ import annotations
@@ -17,16 +17,16 @@ class Wall:
 
 def _confined() -> str | None:
     """None when a template starts confined here, else why not."""
-    from .confine import Unconfinable, compile_filter
-    from .driver import Worker, _Dead
+    from .child.confine import Unconfinable, compile_filter
+    from .handle import TemplateHandle, _Dead
 
     try:
         compile_filter()
     except Unconfinable as exc:
         return str(exc)
-    worker = Worker()
+    worker = TemplateHandle()
     try:
-        worker.start()  # type: ignore[no-untyped-call]  # driver.py is not typed yet
+        worker.start()  # type: ignore[no-untyped-call]  # handle.py is not typed yet
     except _Dead as exc:
         return str(exc)
     finally:
