@@ -24,17 +24,19 @@ MemoryError: budget.STOPS) and `nullcontext`, the only context managers a `with`
 """
 from __future__ import annotations
 
+import bisect
 import collections
 import contextlib
 import copy
 import functools
+import heapq
 import itertools
 import math
 import operator
 import string
 import typing
 
-from . import budget, chance, formatting, named, numpy_members, records
+from . import budget, chance, enums, formatting, named, numpy_members, records
 from .budget import STOPS, Forbidden, too_big
 from .conversions import INT
 from .json_module import MEMBERS as JSON_MEMBERS
@@ -142,7 +144,9 @@ def forget_typing() -> None:
 
 
 _TYPING = ("Any", "Callable", "Dict", "FrozenSet", "Iterable", "Iterator", "List", "Literal", "Mapping",
-           "Optional", "Sequence", "Set", "Tuple", "Union", "TypeVar", "Generator", "Deque", "DefaultDict")
+           "Optional", "Sequence", "Set", "Tuple", "Union", "TypeVar", "Generator", "Deque", "DefaultDict",
+           "ClassVar", "Final", "TypedDict", "Hashable", "Sized", "Collection", "MutableMapping",
+           "MutableSequence", "Type", "NoReturn", "Counter", "OrderedDict", "ChainMap", "Reversible")
 _MATH = ("pi", "e", "tau", "inf", "nan", "sqrt", "isqrt", "floor", "ceil", "trunc", "fabs", "gcd", "log",
          "log2", "log10", "exp", "sin", "cos", "tan", "asin", "acos", "atan", "atan2", "hypot", "degrees",
          "radians", "copysign", "fmod", "modf", "isclose", "isfinite", "isinf", "isnan", "dist", "fsum", "pow")
@@ -151,6 +155,8 @@ _ITERTOOLS = ("product", "permutations", "combinations", "combinations_with_repl
               "dropwhile", "compress", "pairwise", "filterfalse")
 _OPERATOR = ("sub", "truediv", "floordiv", "neg", "pos", "eq", "ne", "lt", "le", "gt", "ge", "not_", "and_",
              "or_", "xor", "itemgetter", "truth", "abs", "index")
+_HEAPQ = ("heappush", "heappop", "heapify", "heapreplace", "heappushpop", "merge", "nlargest", "nsmallest")
+_BISECT = ("bisect", "bisect_left", "bisect_right", "insort", "insort_left", "insort_right")
 _STRING = ("ascii_letters", "ascii_lowercase", "ascii_uppercase", "digits", "hexdigits", "octdigits",
            "punctuation", "whitespace", "printable")
 
@@ -159,10 +165,17 @@ _FACTORIES = {
                      "perm": perm, "prod": prod, "lcm": lcm},
     "itertools": lambda: {n: getattr(itertools, n) for n in _ITERTOOLS},
     "functools": lambda: {"wraps": wraps, "total_ordering": total_ordering, "reduce": functools.reduce, "partial": functools.partial, "cache": functools.cache,
-                          "lru_cache": functools.lru_cache, "cmp_to_key": functools.cmp_to_key},
-    "typing": lambda: {**{n: getattr(typing, n) for n in _TYPING}, "NamedTuple": records.NamedTuple},
+                          "lru_cache": functools.lru_cache, "cmp_to_key": functools.cmp_to_key,
+                          "cached_property": functools.cached_property},
+    "typing": lambda: {**{n: getattr(typing, n) for n in _TYPING}, "NamedTuple": records.NamedTuple,
+                       "Generic": records.Generic, "Protocol": records.Protocol},
     "collections": lambda: {"namedtuple": records.namedtuple, "defaultdict": collections.defaultdict, "Counter": collections.Counter,
-                            "deque": collections.deque, "OrderedDict": collections.OrderedDict},
+                            "deque": collections.deque, "OrderedDict": collections.OrderedDict,
+                            "ChainMap": collections.ChainMap},
+    "heapq": lambda: {n: getattr(heapq, n) for n in _HEAPQ},
+    "bisect": lambda: {n: getattr(bisect, n) for n in _BISECT},
+    "enum": lambda: dict(enums.MEMBERS["enum"]),
+    "abc": lambda: dict(enums.MEMBERS["abc"]),
     "copy": lambda: {"copy": shallow_copy, "deepcopy": deep_copy},
     "contextlib": lambda: {"suppress": suppress, "nullcontext": contextlib.nullcontext},
     "operator": lambda: {**{n: getattr(operator, n) for n in _OPERATOR}, "add": budget.add, "mul": budget.mul,

@@ -18,7 +18,10 @@ spell, so a program can neither reach nor shadow them:
 - every `except` handler starts with `$caught(<the exception>)`, which raises budget stops and
   refusals again (a program catches its own errors, never the sandbox's);
 - every `finally` body starts with `$final()`, which remembers a RecursionError or MemoryError
-  passing through (a `return`, `break` or `continue` there would swallow it) as the program's stop.
+  passing through (a `return`, `break` or `continue` there would swallow it) as the program's stop;
+- a `match` value pattern's dotted name and a class pattern's class become attributes of
+  `$pattern` that name them (`$pattern.v:Color.RED`, `$pattern.c1:Point:y`), resolved when the
+  case is tried and read through the attribute rule (patterns.py).
 """
 from __future__ import annotations
 
@@ -26,7 +29,7 @@ import ast
 
 from .allowed import ATTRIBUTES, DENIED, FIELDS, PROVIDED
 from .budget import Forbidden
-from .classes import DEFINABLE, READABLE, mangle_private
+from .classes import DATA, DEFINABLE, READABLE, mangle_private
 from .formatting import LONG_NUMBER, SPEC_DIGITS
 from .modules import MEMBERS, refusal
 
@@ -110,7 +113,7 @@ def _r_class(n, walk):
     """A class statement (classes.py builds it): no keywords, `object` as a base is implied,
     and its defs and assignments (`__rmul__ = __mul__`) may bind DEFINABLE dunders (read anywhere)."""
     check_name(n, n.name, True, walk)
-    if n.keywords:
+    if n.keywords and [k.arg for k in n.keywords] != ["metaclass"]:  # metaclass=: only abc's ABCMeta (records.py)
         fail(n, f"class {n.name}: class keywords (metaclass=...) are not allowed (a metaclass reaches the interpreter)")
     n.bases = [b for b in n.bases if not (type(b) is ast.Name and b.id == "object" and "object" not in walk.stored)]
     for statement in n.body:
@@ -119,8 +122,9 @@ def _r_class(n, walk):
         elif type(statement) is ast.FunctionDef and statement.name in PROVIDED:  # a method `put`: the
             walk.methods.add(id(statement))  # class's name, not the program's (`robot.put(...)`)
             walk.stored.add(statement.name)
-        elif type(statement) is ast.Assign:  # `__rmul__ = __mul__`
-            walk.methods.update(id(t) for t in statement.targets if type(t) is ast.Name and t.id in DEFINABLE)
+        elif type(statement) is ast.Assign:  # `__rmul__ = __mul__`, `__slots__ = ("x", "y")`
+            walk.methods.update(id(t) for t in statement.targets
+                                if type(t) is ast.Name and (t.id in DEFINABLE or t.id in DATA))
     mangle_private(n)
 
 
@@ -198,30 +202,75 @@ def _r_import_from(n, walk):
             check_name(n, alias.asname or alias.name, True, walk)
 
 
+def _dotted(node, walk) -> str:
+    """The text of a pattern's dotted name (`Color.RED`), each part checked as a name or attribute is."""
+    parts = []
+    while type(node) is ast.Attribute:
+        _check_attribute_name(node, walk)
+        parts.append(node.attr)
+        node = node.value
+    check_name(node, node.id, False, walk)
+    return ".".join([node.id, *reversed(parts)])
+
+
+def _pattern(key: str, old) -> ast.Attribute:
+    return _loc(ast.Attribute(_loc(ast.Name("$pattern", _LOAD), old), key, _LOAD), old)
+
+
+def _r_match_value(n, walk):
+    if type(n.value) is ast.Attribute:
+        n.value = _pattern("v:" + _dotted(n.value, walk), n.value)
+
+
+def _r_match_class(n, walk):
+    for name in n.kwd_attrs:  # attributes the pattern reads, as `subject.name` would
+        _check_attribute_name(_loc(ast.Attribute(n.cls, name, _LOAD), n), walk)
+    n.cls = _pattern(f"c{len(n.patterns)}:{_dotted(n.cls, walk)}:{','.join(n.kwd_attrs)}", n.cls)
+
+
+def _r_match_mapping(n, walk):
+    n.keys = [_pattern("v:" + _dotted(key, walk), key) if type(key) is ast.Attribute else key for key in n.keys]
+    if n.rest is not None:
+        check_name(n, n.rest, True, walk)
+
+
+def _r_match_capture(n, walk):  # `case x`, `case [*rest]`, `case ... as x`
+    if n.name is not None:
+        check_name(n, n.name, True, walk)
+
+
 RULES = {
     ast.arg: _r_arg, ast.keyword: _r_keyword, ast.FunctionDef: _r_function,
     ast.For: _r_loop, ast.While: _r_loop, ast.Lambda: _r_lambda, ast.comprehension: _r_comprehension,
     ast.FormattedValue: _r_formatted, ast.ExceptHandler: _r_handler, ast.Try: _r_try, ast.Global: _r_scope, ast.Nonlocal: _r_scope,
     ast.Import: _r_import, ast.ImportFrom: _r_import_from, ast.ClassDef: _r_class,
+    ast.MatchValue: _r_match_value, ast.MatchClass: _r_match_class, ast.MatchMapping: _r_match_mapping,
+    ast.MatchAs: _r_match_capture, ast.MatchStar: _r_match_capture,
 }
 
 
 # --- wraps: a child replaced by its instrumented form -----------------------------------------
 
-def _w_attribute(n, wrapped, walk):
-    """attributes.py's rule, before running: reads become $attr(x, 'm'), stores (and dels)
-    $fields(x, 'm')['m']; a name the sandbox does not offer must be one the program defines
-    (checked at the end of the walk: instrument.py)."""
+def _check_attribute_name(n, walk):
+    """A name read or written as `x.name`: no dunder but those a program may read; a name the
+    sandbox does not offer must be one the program defines (checked at the end of the walk)."""
     name = n.attr
     if name[:2] == "__" and ((name not in DEFINABLE and name not in READABLE) or type(n.ctx) is not ast.Load):
         fail(n, f"attributes starting with two underscores reach the interpreter: .{name}")
-    key = _loc(ast.Constant(name), n)
-    wrapped.add(id(key))  # ours: not one of the program's strings (Walk.strings)
     if type(n.ctx) is not ast.Load:
         walk.stored.add(name)
-        return _loc(ast.Subscript(_call("$fields", [n.value, key], n), key, n.ctx), n)
-    if name not in ATTRIBUTES and name[:2] != "__" and (name not in walk.reads or type(n.value) is ast.Name):
+    elif name not in ATTRIBUTES and name[:2] != "__" and (name not in walk.reads or type(n.value) is ast.Name):
         walk.reads[name] = n  # (a module's name as the owner makes the clearer message)
+
+
+def _w_attribute(n, wrapped, walk):
+    """attributes.py's rule, before running: reads become $attr(x, 'm'), stores (and dels)
+    $fields(x, 'm')['m'] (_check_attribute_name first)."""
+    _check_attribute_name(n, walk)
+    key = _loc(ast.Constant(n.attr), n)
+    wrapped.add(id(key))  # ours: not one of the program's strings (Walk.strings)
+    if type(n.ctx) is not ast.Load:
+        return _loc(ast.Subscript(_call("$fields", [n.value, key], n), key, n.ctx), n)
     return _call("$attr", [n.value, key], n)
 
 
@@ -291,7 +340,7 @@ def _is_list_field(t: type, field: str) -> bool:
     return field in {
         "body", "targets", "orelse", "values", "elts", "keys", "generators", "comparators",
         "keywords", "ifs", "posonlyargs", "kwonlyargs", "kw_defaults", "defaults", "handlers", "finalbody",
-        "decorator_list", "bases", "items",
+        "decorator_list", "bases", "items", "cases", "patterns", "kwd_patterns",
     } or (field == "args" and t in (ast.Call, ast.arguments))
 
 

@@ -43,6 +43,7 @@ from . import attributes, chance
 from .classes import SERIALS
 from .records import build_class
 from .modules import forget_typing, import_module, load
+from .patterns import PATTERNS
 from .result import checked
 
 MESSAGE_CHARS = 400
@@ -95,7 +96,7 @@ BUILTINS = {
     "$iadd": budget.iadd, "$imul": budget.imul, "$ipow": budget.power, "$ilshift": budget.lshift,
     "$imod": formatting.mod, "$iitem": budget.iitem, "$slice": slice, "$len": budget.checked_len,
     "$attr": attributes.read, "$fields": attributes.fields, "$caught": _caught, "$final": _final,
-    "$fstr": formatting.fstring_field,
+    "$fstr": formatting.fstring_field, "$pattern": PATTERNS,
 }
 
 # --- compile ------------------------------------------------------------------------------------

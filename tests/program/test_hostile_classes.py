@@ -25,7 +25,7 @@ HOSTILE = {
     "__index__": ("class I:\n    def __index__(self):\n        return 0\nput(board, 'washer', 'red', I(), 0)", F),
     "__class_getitem__": ("class A:\n    def __class_getitem__(cls, k):\n        return k", F),
     "__new__": ("class A:\n    def __new__(cls):\n        return board", F),
-    "__slots__ in the body": ("class A:\n    __slots__ = ('x',)", F),
+    "a __dict__ slot": ("class A:\n    __slots__ = ('__dict__',)", F),
     "dunder assigned in the body": ("class A:\n    __init_subclass__ = print", F),
     "definable dunder bound outside a class body": ("__eq__ = lambda a, b: True", F),
     "definable dunder bound in a method": ("class A:\n    def f(self):\n        __eq__ = 1\n        return __eq__", F),
