@@ -34,6 +34,7 @@ import json
 import os
 import subprocess
 import sys
+import types
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
@@ -78,12 +79,17 @@ def _plain_exec(source: str, semantics: str = MODULE) -> list:
         last[0] = Board(rows, cols)
         return last[0]
 
-    env = {"__name__": "__main__", "board": last[0], "put": put, "init_board": init_board, "np": numpy}
+    passed = last[0]
+    env = {"__name__": "__main__", "board": passed, "put": put, "init_board": init_board, "np": numpy}
+    if semantics == MODULE:  # the program is the script: `__main__` (dataclasses reads string annotations there)
+        sys.modules["__main__"] = script = types.SimpleNamespace()  # type: ignore[assignment]
+        script.__dict__.update(env)
+        env = script.__dict__
     scope = env
     if semantics == PAPER:  # the authors' exec(code) inside a function of their scorer module
         env = {"__name__": namespaces.MODULE_NAME, "put": put, "init_board": init_board, "np": numpy,
                "json": json, "re": __import__("re"), "Counter": collections.Counter, "deepcopy": copy.deepcopy}
-        scope = {"instruction": source, "board": last[0]}
+        scope = {"instruction": source, "board": passed}
     try:
         with contextlib.redirect_stdout(io.StringIO()):
             exec(compile(source, "<honest>", "exec", dont_inherit=True), env, scope)
@@ -92,7 +98,7 @@ def _plain_exec(source: str, semantics: str = MODULE) -> list:
         outcome = exc.code.value
     except Exception as exc:  # the corpus's own fault, reported as such (a paper scoping error is not)
         outcome = classify(exc).value if semantics == PAPER else f"not honest: plain exec raised {type(exc).__name__}: {exc}"
-    result = scope["board"] if semantics == PAPER else env.get("board")
+    result = passed if semantics == PAPER else env.get("board")  # PAPER: the board passed in is scored
     return [outcome, (result if type(result) is Board else last[0]).cells()]
 
 

@@ -17,11 +17,15 @@ comprehensions, generators, classes (with the ordinary dunder methods, also boun
 the program's own functions, `with contextlib.suppress(...)`, try/except/else/finally, raise, assert, del,
 global/nonlocal, annotations, `_` names, set/dict/list displays, the common methods of
 str/list/dict/set/tuple (and of collections' defaultdict/Counter/deque), f-strings,
-`str.format` and `%` formatting, map, filter, isinstance, float, next/iter, and imports of math,
-itertools, functools, typing, collections, copy, operator, string, json, dataclasses (with
-`fields`), contextlib (suppress, nullcontext), random (CPython's
-sequence; seeded with 0 unless the program seeds it) and numpy (arrays with numpy's semantics
-for the subset models use), all under the budgets of Limits.
+`str.format` and `%` formatting, map, filter, isinstance, float, next/iter, `type(x)` (of what
+the program could name anyway), `match` (every pattern kind; what a pattern reads goes through
+the attribute rule: patterns.py), `__slots__`, and imports of math, itertools, functools (cache,
+lru_cache with cache_info, cached_property, ...), typing (ClassVar, Final, TypedDict, Generic,
+Protocol, ...), collections (and collections.abc, ChainMap, OrderedDict.move_to_end), copy,
+operator, string, json, dataclasses (with `fields`), contextlib (suppress, nullcontext), enum and
+abc (enums.py), heapq, bisect, textwrap (dedent), random (CPython's sequence; seeded with 0
+unless the program seeds it) and numpy (arrays with numpy's semantics for the subset models use),
+all under the budgets of Limits.
 
 Refused (`forbidden`, with the reason in the message), because they reach the interpreter, the
 file system, the network or the scoring:
@@ -29,14 +33,18 @@ file system, the network or the scoring:
   dunder methods a class may define (by def or by assignment in its body) and `__name__`; any
   other attribute than the allowed methods, module members and what the program defines;
   attribute stores except on the program's own objects and functions (attributes.py has the rule);
-- eval, exec, compile, open, input, getattr/setattr, type, object, globals/vars, breakpoint and
+- eval, exec, compile, open, input, getattr/setattr, object, globals/vars, breakpoint and
   Python's other builtins that are not listed above (unless the program binds the name itself);
+  `type()` of a class (a metaclass), of an internal object, or with three arguments;
 - imports of anything but the stand-in modules (os, sys, subprocess, re, ...), and the
-  members they do not offer (typing.get_type_hints, numpy.linalg, ...);
-- metaclasses, class keywords, bases other than the program's classes, exceptions and
-  NamedTuple, and dunder definitions that change how Python treats an object (classes.py);
+  members they do not offer (typing.get_type_hints, functools.singledispatch, numpy.linalg, ...);
+- metaclasses, class keywords (but `metaclass=ABCMeta`), bases other than the program's classes,
+  exceptions, enum's, abc.ABC, NamedTuple, TypedDict, Generic and Protocol, and dunder
+  definitions that change how Python treats an object (classes.py); enum's machinery
+  (`_member_map_`, ...), a slot's descriptor, a class pattern reading a dunder or a method
+  whose budget is checked when called;
 - `with` on anything but contextlib's suppress/nullcontext (a program's class cannot define
-  __enter__/__exit__), async/await, match, try/except*;
+  __enter__/__exit__), async/await, try/except*;
 - redefining `put` or `init_board`;
 - format fields that read attributes or items (`{0.x}`, `{0[k]}`), widths above 999, `*` widths.
 Budget stops: `timeout` (steps, wall time) and `resource_limit` (depth, length, integer size,
@@ -68,7 +76,9 @@ Modules (each one's docstring has the details):
   conversions.py  int/str/repr/ascii with budgets;  formatting.py  %, str.format, format(), f-strings
   methods.py      the methods a program may call per type, and the checked ones
   modules.py      the stand-in modules a program may import
-  classes.py      ProgramClass: what a program's class may define and derive from
+  classes.py      ProgramClass: what a program's class may define and derive from (abstract
+                  methods, ProgramEnumType, type());  enums.py  enum and abc
+  patterns.py     match: value and class patterns resolved lazily, read by the attribute rule
   records.py      class statements (build_class), dataclass (and fields), namedtuple, NamedTuple
   attributes.py   the one rule for `obj.name` (reads: $attr, writes: $fields)
   chance.py       random: CPython's generator, one per program

@@ -24,7 +24,7 @@ from .modules import MEMBERS
 ALLOWED_BUILTINS = frozenset(
     "range zip enumerate len min max abs sum sorted reversed any all round divmod "
     "int str bool list tuple dict set frozenset float print isinstance issubclass map filter next iter "
-    "chr ord pow format repr ascii hex bin oct callable hash slice super property staticmethod classmethod "
+    "chr ord pow format repr ascii hex bin oct callable hash slice super property staticmethod classmethod type "
     "NotImplemented Ellipsis".split()
 ) | EXCEPTIONS
 PROVIDED = frozenset({"put", "init_board"})  # `board` is provided too, but may be rebound

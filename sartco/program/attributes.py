@@ -32,6 +32,7 @@ import dataclasses
 import functools
 import itertools
 import types
+from collections.abc import Callable
 from typing import Any
 
 from .arrays import ARRAY_NAMES, ndarray
@@ -99,7 +100,7 @@ def _unbound(real: type, name: str):
     return method
 
 
-def read(obj: Any, name: str, fetch=getattr) -> Any:
+def read(obj: Any, name: str, fetch: Callable[[Any, str], Any] = getattr) -> Any:
     """`obj.name` in a program (`$attr`). `fetch(obj, name)` reads a name the rule allows (the
     rule alone: patterns.py passes one that reads nothing, for Python's own read after it)."""
     t = type(obj)

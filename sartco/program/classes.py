@@ -29,8 +29,11 @@ from __future__ import annotations
 
 import ast
 import builtins
+import collections
 import enum
+from typing import Any
 
+from . import conversions
 from .budget import Forbidden
 
 DEFINABLE = frozenset("""
@@ -62,7 +65,7 @@ class ProgramClass(type):
         return f"<class '__main__.{type.__getattribute__(cls, '__qualname__')}'>"
 
 
-def check_names(name: str, namespace) -> None:
+def check_names(name: str, namespace: Any) -> None:
     """What a class body of the program may bind: DEFINABLE dunders, the compiler's, DATA."""
     for key in namespace:
         if key[:2] == "__" and key not in DEFINABLE and key not in COMPILER_NAMES and key not in DATA:
@@ -77,7 +80,7 @@ def check_names(name: str, namespace) -> None:
 class ProgramEnumType(enum.EnumType):
     """The type of every enum a program defines (enums.py's bases): EnumType, after check_names."""
 
-    def __new__(metacls, cls, bases, classdict, **kwds):
+    def __new__(metacls, cls: str, bases: tuple[type, ...], classdict: Any, **kwds: Any) -> Any:
         check_names(cls, classdict)
         return super().__new__(metacls, cls, bases, classdict, **kwds)
 
@@ -102,6 +105,27 @@ def serial_hash(obj) -> int:
     return entry[0]
 
 
+_NAMED_TYPES = frozenset({bool, float, complex, list, tuple, dict, set, frozenset, bytes, range, slice, type(None),
+                          collections.Counter, collections.deque, collections.defaultdict, collections.OrderedDict,
+                          collections.ChainMap})
+
+
+def type_of(*args: Any) -> Any:
+    """`type(x)`: x's class where the program could name it anyway: its own classes (enums
+    too), exceptions, the program's `int` and `str` for Python's, the other built-in types and
+    collections' types; never a metaclass (`type(cls)`) nor an internal type, and never a new class."""
+    if len(args) != 1:
+        raise Forbidden("type() with three arguments makes a class outside a class statement: it is not "
+                        "available in the sandbox")
+    t = type(args[0])
+    if t in _NAMED_TYPES or type(t) in METACLASSES or issubclass(t, BaseException):
+        return t
+    if t is int or t is str:
+        return conversions.INT if t is int else conversions.STR
+    raise Forbidden(f"type() of a {'class' if issubclass(t, type) else t.__name__} is not available in the "
+                    f"sandbox (it reaches the interpreter)")
+
+
 def make(name: str, bases: tuple, namespace: dict, abstract: bool = False):
     """A program class from a namespace whose names were checked (or are ours); `abstract`: made
     as ABCMeta would make it (metaclass=ABCMeta), as is any class with an abstract base (ABC)."""
@@ -115,7 +139,7 @@ def make(name: str, bases: tuple, namespace: dict, abstract: bool = False):
     return cls
 
 
-def set_abstract_methods(cls) -> None:
+def set_abstract_methods(cls: Any) -> None:
     """`__abstractmethods__` as abc.ABCMeta computes it: then `cls()` raises Python's TypeError
     ("Can't instantiate abstract class ...") while one of them is not overridden."""
     abstracts = {name for name, value in cls.__dict__.items() if getattr(value, "__isabstractmethod__", False)}

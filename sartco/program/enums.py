@@ -21,21 +21,23 @@ from __future__ import annotations
 import abc
 import enum
 import types
+from typing import Any
 
 from .budget import Forbidden
-from .classes import FILENAME, ProgramClass, ProgramEnumType
+from .classes import FILENAME, ProgramClass, ProgramEnumType, set_abstract_methods
 
 
 def _remade(base: type) -> type:
     namespace = ProgramEnumType.__prepare__(base.__name__, (base,))
     namespace.update({"__module__": "enum", "__qualname__": base.__name__})
-    return ProgramEnumType(base.__name__, (base,), namespace)
+    made: type = ProgramEnumType(base.__name__, (base,), namespace)
+    return made
 
 
 BASES = {base: _remade(base) for base in (enum.Enum, enum.IntEnum, enum.StrEnum, enum.Flag, enum.IntFlag)}
 
 
-def _internals() -> frozenset:
+def _internals() -> frozenset[str]:
     """Enum's machinery: every `_name` that EnumType and enum's classes put on a class or member."""
     names: set[str] = set()
     for base in BASES.values():
@@ -48,13 +50,13 @@ def _internals() -> frozenset:
 INTERNALS = _internals()
 
 
-def is_enum(obj) -> bool:
+def is_enum(obj: object) -> bool:
     """An enum class of the program's, or one of its members."""
     return type(obj) is ProgramEnumType or type(type(obj)) is ProgramEnumType
 
 
 ABC = ProgramClass("ABC", (), {"__slots__": (), "__module__": "abc", "__qualname__": "ABC"})
-ABC.__abstractmethods__ = frozenset()
+set_abstract_methods(ABC)  # (none: what makes its subclasses abstract classes)
 
 
 class ABCMeta:
@@ -69,7 +71,7 @@ class ABCMeta:
 ABC_META = ABCMeta()
 
 
-def abstractmethod(funcobj):
+def abstractmethod(funcobj: Any) -> Any:
     """abc.abstractmethod, on the program's own functions (and their property/static/class methods)."""
     inner = funcobj.__func__ if type(funcobj) in (staticmethod, classmethod) else \
         funcobj.fget if type(funcobj) is property else funcobj

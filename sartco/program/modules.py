@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import bisect
 import collections
+import collections.abc
 import contextlib
 import copy
 import functools
@@ -34,6 +35,7 @@ import itertools
 import math
 import operator
 import string
+import textwrap
 import typing
 
 from . import budget, chance, enums, formatting, named, numpy_members, records
@@ -157,6 +159,9 @@ _OPERATOR = ("sub", "truediv", "floordiv", "neg", "pos", "eq", "ne", "lt", "le",
              "or_", "xor", "itemgetter", "truth", "abs", "index")
 _HEAPQ = ("heappush", "heappop", "heapify", "heapreplace", "heappushpop", "merge", "nlargest", "nsmallest")
 _BISECT = ("bisect", "bisect_left", "bisect_right", "insort", "insort_left", "insort_right")
+_ABCS = ("Iterable", "Iterator", "Generator", "Sequence", "MutableSequence", "Mapping", "MutableMapping", "Set",
+         "MutableSet", "Callable", "Hashable", "Sized", "Container", "Collection", "Reversible")
+_COLLECTIONS_ABC = Module("collections.abc", {n: getattr(collections.abc, n) for n in _ABCS})  # for annotations
 _STRING = ("ascii_letters", "ascii_lowercase", "ascii_uppercase", "digits", "hexdigits", "octdigits",
            "punctuation", "whitespace", "printable")
 
@@ -171,7 +176,9 @@ _FACTORIES = {
                        "Generic": records.Generic, "Protocol": records.Protocol},
     "collections": lambda: {"namedtuple": records.namedtuple, "defaultdict": collections.defaultdict, "Counter": collections.Counter,
                             "deque": collections.deque, "OrderedDict": collections.OrderedDict,
-                            "ChainMap": collections.ChainMap},
+                            "ChainMap": collections.ChainMap, "abc": _COLLECTIONS_ABC},
+    "collections.abc": lambda: dict(vars(_COLLECTIONS_ABC)),
+    "textwrap": lambda: {"dedent": textwrap.dedent},  # (its other functions use regular expressions)
     "heapq": lambda: {n: getattr(heapq, n) for n in _HEAPQ},
     "bisect": lambda: {n: getattr(bisect, n) for n in _BISECT},
     "enum": lambda: dict(enums.MEMBERS["enum"]),
@@ -220,5 +227,5 @@ def import_module(name, globals=None, locals=None, fromlist=(), level=0):
     """The `__import__` of a program's import statements (instrument.py refused every other name)."""
     if level != 0 or name not in _MEMBERS_CACHE:
         raise Forbidden(refusal(name))
-    return load(name)
+    return load(name if fromlist else name.partition(".")[0])  # `import collections.abc` binds collections
 

@@ -26,6 +26,7 @@ spell, so a program can neither reach nor shadow them:
 from __future__ import annotations
 
 import ast
+from typing import Any, NoReturn
 
 from .allowed import ATTRIBUTES, DENIED, FIELDS, PROVIDED
 from .budget import Forbidden
@@ -37,7 +38,7 @@ CHECKED_OPS = {ast.Add: "$add", ast.Mult: "$mul", ast.Pow: "$pow", ast.LShift: "
 INPLACE_OPS = {ast.Add: "$iadd", ast.Mult: "$imul", ast.Pow: "$ipow", ast.LShift: "$ilshift", ast.Mod: "$imod"}
 
 
-def fail(node, text: str):
+def fail(node: Any, text: str) -> NoReturn:
     line = getattr(node, "lineno", None)
     exc = Forbidden(f"line {line}: {text}" if line else text)
     exc.position = (line or 0, getattr(node, "col_offset", 0))
@@ -58,7 +59,7 @@ class Walk:
         self.modules: dict[str, str] = {}  # name bound by an import -> module
 
 
-def check_name(node, name: str, store: bool, walk: Walk):
+def check_name(node: Any, name: str, store: bool, walk: Walk) -> None:
     if name[0] == "$":  # ours: no Python source can spell it
         return
     if name[0] == "_" and name[:2] == "__" and (id(node) not in walk.methods if store else name not in DEFINABLE and name != "__name__"):
@@ -71,7 +72,7 @@ def check_name(node, name: str, store: bool, walk: Walk):
         walk.denied[name] = node  # refused at the end unless the program binds the name itself
 
 
-def _loc(new, old):
+def _loc(new: Any, old: Any) -> Any:
     new.lineno = old.lineno
     new.col_offset = old.col_offset
     new.end_lineno = old.end_lineno
@@ -202,7 +203,7 @@ def _r_import_from(n, walk):
             check_name(n, alias.asname or alias.name, True, walk)
 
 
-def _dotted(node, walk) -> str:
+def _dotted(node: Any, walk: Walk) -> str:
     """The text of a pattern's dotted name (`Color.RED`), each part checked as a name or attribute is."""
     parts = []
     while type(node) is ast.Attribute:
@@ -213,28 +214,29 @@ def _dotted(node, walk) -> str:
     return ".".join([node.id, *reversed(parts)])
 
 
-def _pattern(key: str, old) -> ast.Attribute:
+def _pattern(key: str, old: Any) -> ast.Attribute:
     return _loc(ast.Attribute(_loc(ast.Name("$pattern", _LOAD), old), key, _LOAD), old)
 
 
-def _r_match_value(n, walk):
+def _r_match_value(n: ast.MatchValue, walk: Walk) -> None:
     if type(n.value) is ast.Attribute:
         n.value = _pattern("v:" + _dotted(n.value, walk), n.value)
 
 
-def _r_match_class(n, walk):
-    for name in n.kwd_attrs:  # attributes the pattern reads, as `subject.name` would
-        _check_attribute_name(_loc(ast.Attribute(n.cls, name, _LOAD), n), walk)
+def _r_match_class(n: ast.MatchClass, walk: Walk) -> None:
+    for name in n.kwd_attrs:  # read by the rule when the case is tried: a name nothing has is no match
+        if name[:2] == "__" and name not in READABLE:
+            fail(n, f"attributes starting with two underscores reach the interpreter: .{name}")
     n.cls = _pattern(f"c{len(n.patterns)}:{_dotted(n.cls, walk)}:{','.join(n.kwd_attrs)}", n.cls)
 
 
-def _r_match_mapping(n, walk):
+def _r_match_mapping(n: ast.MatchMapping, walk: Walk) -> None:
     n.keys = [_pattern("v:" + _dotted(key, walk), key) if type(key) is ast.Attribute else key for key in n.keys]
     if n.rest is not None:
         check_name(n, n.rest, True, walk)
 
 
-def _r_match_capture(n, walk):  # `case x`, `case [*rest]`, `case ... as x`
+def _r_match_capture(n: Any, walk: Walk) -> None:  # `case x`, `case [*rest]`, `case ... as x`
     if n.name is not None:
         check_name(n, n.name, True, walk)
 
@@ -251,7 +253,7 @@ RULES = {
 
 # --- wraps: a child replaced by its instrumented form -----------------------------------------
 
-def _check_attribute_name(n, walk):
+def _check_attribute_name(n: ast.Attribute, walk: Walk) -> None:
     """A name read or written as `x.name`: no dunder but those a program may read; a name the
     sandbox does not offer must be one the program defines (checked at the end of the walk)."""
     name = n.attr

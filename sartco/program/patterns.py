@@ -28,6 +28,7 @@ from typing import Any
 
 from .attributes import read
 from .budget import Forbidden
+from .classes import READABLE
 from .conversions import INT, STR
 from .methods import CHECKED_METHODS
 
@@ -43,12 +44,17 @@ def _nothing(obj: Any, name: str) -> None:
 class _PatternType(type):
     """The type of a class pattern's stand-in class: an isinstance that also checks the rule."""
 
+    _real: type  # the class the pattern names
+    _reads: tuple[Any, ...]  # the names Python will read of a subject that is one
+
     def __instancecheck__(cls, subject: Any) -> bool:
         if not isinstance(subject, cls._real):
             return False
         for name in cls._reads:
             if type(name) is not str:  # Python says it again: "__match_args__ elements must be strings"
                 return True
+            if name[:2] == "__" and name not in READABLE:  # (a program's __match_args__ may name one)
+                raise Forbidden(f"attributes starting with two underscores reach the interpreter: .{name}")
             if name in CHECKED_METHODS:
                 raise Forbidden(f"a class pattern cannot read .{name}: the budgets check it only when called")
             try:
@@ -58,7 +64,7 @@ class _PatternType(type):
         return True
 
 
-_CACHE: dict[tuple, type] = {}  # (class, positional sub-patterns, keyword names) -> its stand-in
+_CACHE: dict[tuple[Any, ...], type] = {}  # (class, positional sub-patterns, keyword names) -> its stand-in
 
 
 def _class_pattern(real: Any, positional: int, keywords: tuple[str, ...]) -> Any:
@@ -82,7 +88,7 @@ def _class_pattern(real: Any, positional: int, keywords: tuple[str, ...]) -> Any
     return made
 
 
-def _resolve(dotted: str, frame) -> Any:
+def _resolve(dotted: str, frame: Any) -> Any:
     """A dotted name as Python reads it in `frame` (locals, globals, builtins), each attribute by
     the attribute rule."""
     first, *rest = dotted.split(".")

@@ -74,7 +74,7 @@ def _capture(name, bases, namespace):
     return namespace
 
 
-def _generic(cls, params):
+def _generic(cls: type, params: object) -> types.GenericAlias:
     """`Queue[int]` of a class deriving from typing's Generic or Protocol: an alias, as typing's."""
     return types.GenericAlias(cls, params)
 
@@ -108,7 +108,7 @@ def build_class(body, name, *bases, **keywords):
     for base in bases:
         if base is NamedTuple or base is typing.TypedDict:
             if len(bases) > 1:
-                raise Forbidden(f"class {name}: a {base.__name__} has no other base")
+                raise Forbidden(f"class {name}: a {'NamedTuple' if base is NamedTuple else 'TypedDict'} has no other base")
         elif type(base) is not ProgramClass and base not in EXCEPTION_TYPES:
             raise Forbidden(f"class {name}: a class may derive only from the program's own classes, the "
                             f"exception classes, enum's, typing's NamedTuple, TypedDict, Generic and Protocol "

@@ -40,7 +40,7 @@ from .budget import Forbidden, Limit
 from .execution import MODULE, PAPER, clean, not_a_str
 from .instrument import prepare
 from . import attributes, chance
-from .classes import SERIALS
+from .classes import SERIALS, type_of
 from .records import build_class
 from .modules import forget_typing, import_module, load
 from .patterns import PATTERNS
@@ -86,6 +86,7 @@ _OWN = {  # builtins of ours (with budgets); the rest of ALLOWED_BUILTINS are Py
     "range": budget.checked_range, "round": budget.checked_round, "sum": budget.checked_sum,
     "print": budget.no_print, "int": conversions.INT, "str": conversions.STR, "pow": budget.power,
     "format": formatting.format_value, "repr": conversions.to_repr, "ascii": conversions.to_ascii,
+    "type": type_of,
 }
 BUILTINS = {
     **{name: _Refused(name) for name in DENIED},
@@ -239,7 +240,7 @@ def _run(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE,
     _STEPS = steps = repeat(True, limits.steps)
     BUILTINS["$t"] = steps.__next__  # no program can reach the dict: one serves them all
     env = namespace(board, init_board)
-    env, scope = namespaces.paper(env, source) if semantics == PAPER else (env, env)
+    env, scope = namespaces.paper(env, source) if semantics == PAPER else namespaces.script(env)
     forget_typing()  # typing's caches start empty: nothing of an earlier program is in them
     old_limit = sys.getrecursionlimit()
     error = None

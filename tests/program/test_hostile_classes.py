@@ -39,7 +39,8 @@ HOSTILE = {
     "base from a stand-in type": ("import collections\nclass D(collections.defaultdict):\n    pass", F),
     "base from a function": ("class A(print):\n    pass", F),
     # reading what is behind an object
-    "type()": ("class A:\n    pass\nt = type(A())", F),
+    "type() of a class: its metaclass": ("class A:\n    pass\nt = type(A)", F),
+    "type() making a class": ("t = type('A', (), {})", F),
     "__class__ of an instance, then its dict": ("class A:\n    pass\nc = A().__class__.__dict__", F),
     "metaclass through __class__": ("class A:\n    pass\nM = A.__class__\nB = M('B', (str,), {})", F),
     "metaclass through an instance's class": ("class A:\n    pass\nM = A().__class__.__class__", F),
