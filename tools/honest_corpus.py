@@ -69,8 +69,8 @@ def _plain_exec(source: str, semantics: str = MODULE) -> list:
 
     import numpy  # the real one, as the authors' scorer module had it
 
-    from sartco.program import namespaces
-    from sartco.program.runtime import classify
+    from sartco.program.child import namespaces
+    from sartco.program.child.runtime import classify
     from sartco.world import Board, WorldError, put
 
     last = [Board(8, 8)]

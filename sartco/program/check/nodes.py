@@ -20,64 +20,22 @@ spell, so a program can neither reach nor shadow them:
 - every `finally` body starts with `$final()`, which remembers a RecursionError or MemoryError
   passing through (a `return`, `break` or `continue` there would swallow it) as the program's stop;
 - a `match` value pattern's dotted name and a class pattern's class become attributes of
-  `$pattern` that name them (`$pattern.v:Color.RED`, `$pattern.c1:Point:y`), resolved when the
-  case is tried and read through the attribute rule (patterns.py).
+  `$pattern` (matching.py).
+The checks of names and the walk's record are walk.py's.
 """
 from __future__ import annotations
 
 import ast
-from typing import Any, NoReturn
 
-from .allowed import ATTRIBUTES, DENIED, FIELDS, PROVIDED
-from .budget import Forbidden
-from .classes import DATA, DEFINABLE, READABLE, mangle_private
-from .formatting import LONG_NUMBER, SPEC_DIGITS
-from .modules import MEMBERS, refusal
+from .allowed import FIELDS, PROVIDED
+from .matching import MATCH_RULES
+from .walk import check_attribute_name, check_name, fail, located
+from ..standins.classes import DATA, DEFINABLE, mangle_private
+from ..standins.formatting import LONG_NUMBER, SPEC_DIGITS
+from ..standins.modules import MEMBERS, refusal
 
 CHECKED_OPS = {ast.Add: "$add", ast.Mult: "$mul", ast.Pow: "$pow", ast.LShift: "$lshift", ast.Mod: "$mod"}
 INPLACE_OPS = {ast.Add: "$iadd", ast.Mult: "$imul", ast.Pow: "$ipow", ast.LShift: "$ilshift", ast.Mod: "$imod"}
-
-
-def fail(node: Any, text: str) -> NoReturn:
-    line = getattr(node, "lineno", None)
-    exc = Forbidden(f"line {line}: {text}" if line else text)
-    exc.position = (line or 0, getattr(node, "col_offset", 0))
-    raise exc
-
-
-class Walk:
-    """What one walk has seen: names the program binds, builtins it reads that are not there."""
-
-    __slots__ = ("stored", "denied", "methods", "reads", "strings", "modules")
-
-    def __init__(self):
-        self.stored: set[str] = set()  # names bound, attributes stored
-        self.denied: dict[str, ast.AST] = {}
-        self.methods: set[int] = set()  # the defs and names of a class body that bind DEFINABLE dunders
-        self.reads: dict[str, ast.AST] = {}  # attributes read that the sandbox does not offer
-        self.strings: list[str] = []  # the string constants (their words may name namedtuple fields)
-        self.modules: dict[str, str] = {}  # name bound by an import -> module
-
-
-def check_name(node: Any, name: str, store: bool, walk: Walk) -> None:
-    if name[0] == "$":  # ours: no Python source can spell it
-        return
-    if name[0] == "_" and name[:2] == "__" and (id(node) not in walk.methods if store else name not in DEFINABLE and name != "__name__"):
-        fail(node, f"names starting with two underscores reach the interpreter: {name}")
-    if store:
-        if name in PROVIDED:
-            fail(node, f"{name} is the task's world and cannot be redefined")
-        walk.stored.add(name)
-    elif name in DENIED and name not in walk.denied:
-        walk.denied[name] = node  # refused at the end unless the program binds the name itself
-
-
-def _loc(new: Any, old: Any) -> Any:
-    new.lineno = old.lineno
-    new.col_offset = old.col_offset
-    new.end_lineno = old.end_lineno
-    new.end_col_offset = old.end_col_offset
-    return new
 
 
 _LOAD = ast.Load()
@@ -90,7 +48,7 @@ def _call(helper: str, args: list, old) -> ast.Call:
 
 
 def _tick(old) -> ast.Expr:
-    return _loc(ast.Expr(_call("$t", [], old)), old)
+    return located(ast.Expr(_call("$t", [], old)), old)
 
 
 # --- rules: checks (and in-place instrumentation) of a node itself ---------------------------
@@ -134,7 +92,7 @@ def _r_loop(n, walk):
 
 
 def _r_lambda(n, walk):
-    n.body = _loc(ast.BoolOp(ast.And(), [_call("$t", [], n.body), n.body]), n.body)
+    n.body = located(ast.BoolOp(ast.And(), [_call("$t", [], n.body), n.body]), n.body)
 
 
 def _r_comprehension(n, walk):
@@ -144,18 +102,17 @@ def _r_comprehension(n, walk):
 
 
 def _r_formatted(n, walk):
-    """A constant spec is checked here; a computed one (f'{x:>{w}}') is checked when it runs:
-    the field becomes f'{$fstr(x, conversion, spec)}'."""
+    """A constant spec is checked here, a computed one (f'{x:>{w}}') when it runs; every field
+    becomes f'{$fstr(x, conversion, spec)}' (its text relabelled: no address, conversions.py)."""
     spec = n.format_spec
     if spec is None:
-        return
+        spec = ast.copy_location(ast.Constant(""), n)
     parts = spec.values if type(spec) is ast.JoinedStr else [spec]
     if all(type(part) is ast.Constant for part in parts):
         for part in parts:
             if LONG_NUMBER.search(str(part.value)):
                 fail(n, f"f-string format widths and precisions above {'9' * SPEC_DIGITS} are not allowed")
-        return
-    n.value = _call("$fstr", [n.value, _loc(ast.Constant(n.conversion), n), spec], n)
+    n.value = _call("$fstr", [n.value, located(ast.Constant(n.conversion), n), spec], n)
     n.conversion, n.format_spec = -1, None
 
 
@@ -166,14 +123,14 @@ def _r_handler(n, walk):
         n.name = "$e"
     else:
         check_name(n, n.name, True, walk)
-    n.body.insert(0, _loc(ast.Expr(_call("$caught", [_loc(ast.Name(n.name, _LOAD), n)], n)), n.body[0]))
+    n.body.insert(0, located(ast.Expr(_call("$caught", [located(ast.Name(n.name, _LOAD), n)], n)), n.body[0]))
 
 
 def _r_try(n, walk):
     """A `finally` body first calls $final, which remembers a depth or memory stop passing through:
     a `return`, `break` or `continue` in the body would end it, and the stop must stay the verdict."""
     if n.finalbody:
-        n.finalbody.insert(0, _loc(ast.Expr(_call("$final", [], n.finalbody[0])), n.finalbody[0]))
+        n.finalbody.insert(0, located(ast.Expr(_call("$final", [], n.finalbody[0])), n.finalbody[0]))
 
 
 def _r_scope(n, walk):  # global, nonlocal
@@ -203,76 +160,25 @@ def _r_import_from(n, walk):
             check_name(n, alias.asname or alias.name, True, walk)
 
 
-def _dotted(node: Any, walk: Walk) -> str:
-    """The text of a pattern's dotted name (`Color.RED`), each part checked as a name or attribute is."""
-    parts = []
-    while type(node) is ast.Attribute:
-        _check_attribute_name(node, walk)
-        parts.append(node.attr)
-        node = node.value
-    check_name(node, node.id, False, walk)
-    return ".".join([node.id, *reversed(parts)])
-
-
-def _pattern(key: str, old: Any) -> ast.Attribute:
-    return _loc(ast.Attribute(_loc(ast.Name("$pattern", _LOAD), old), key, _LOAD), old)
-
-
-def _r_match_value(n: ast.MatchValue, walk: Walk) -> None:
-    if type(n.value) is ast.Attribute:
-        n.value = _pattern("v:" + _dotted(n.value, walk), n.value)
-
-
-def _r_match_class(n: ast.MatchClass, walk: Walk) -> None:
-    for name in n.kwd_attrs:  # read by the rule when the case is tried: a name nothing has is no match
-        if name[:2] == "__" and name not in READABLE:
-            fail(n, f"attributes starting with two underscores reach the interpreter: .{name}")
-    n.cls = _pattern(f"c{len(n.patterns)}:{_dotted(n.cls, walk)}:{','.join(n.kwd_attrs)}", n.cls)
-
-
-def _r_match_mapping(n: ast.MatchMapping, walk: Walk) -> None:
-    n.keys = [_pattern("v:" + _dotted(key, walk), key) if type(key) is ast.Attribute else key for key in n.keys]
-    if n.rest is not None:
-        check_name(n, n.rest, True, walk)
-
-
-def _r_match_capture(n: Any, walk: Walk) -> None:  # `case x`, `case [*rest]`, `case ... as x`
-    if n.name is not None:
-        check_name(n, n.name, True, walk)
-
-
 RULES = {
     ast.arg: _r_arg, ast.keyword: _r_keyword, ast.FunctionDef: _r_function,
     ast.For: _r_loop, ast.While: _r_loop, ast.Lambda: _r_lambda, ast.comprehension: _r_comprehension,
     ast.FormattedValue: _r_formatted, ast.ExceptHandler: _r_handler, ast.Try: _r_try, ast.Global: _r_scope, ast.Nonlocal: _r_scope,
     ast.Import: _r_import, ast.ImportFrom: _r_import_from, ast.ClassDef: _r_class,
-    ast.MatchValue: _r_match_value, ast.MatchClass: _r_match_class, ast.MatchMapping: _r_match_mapping,
-    ast.MatchAs: _r_match_capture, ast.MatchStar: _r_match_capture,
+    **MATCH_RULES,
 }
 
 
 # --- wraps: a child replaced by its instrumented form -----------------------------------------
 
-def _check_attribute_name(n: ast.Attribute, walk: Walk) -> None:
-    """A name read or written as `x.name`: no dunder but those a program may read; a name the
-    sandbox does not offer must be one the program defines (checked at the end of the walk)."""
-    name = n.attr
-    if name[:2] == "__" and ((name not in DEFINABLE and name not in READABLE) or type(n.ctx) is not ast.Load):
-        fail(n, f"attributes starting with two underscores reach the interpreter: .{name}")
-    if type(n.ctx) is not ast.Load:
-        walk.stored.add(name)
-    elif name not in ATTRIBUTES and name[:2] != "__" and (name not in walk.reads or type(n.value) is ast.Name):
-        walk.reads[name] = n  # (a module's name as the owner makes the clearer message)
-
-
 def _w_attribute(n, wrapped, walk):
     """attributes.py's rule, before running: reads become $attr(x, 'm'), stores (and dels)
     $fields(x, 'm')['m'] (_check_attribute_name first)."""
-    _check_attribute_name(n, walk)
-    key = _loc(ast.Constant(n.attr), n)
+    check_attribute_name(n, walk)
+    key = located(ast.Constant(n.attr), n)
     wrapped.add(id(key))  # ours: not one of the program's strings (Walk.strings)
     if type(n.ctx) is not ast.Load:
-        return _loc(ast.Subscript(_call("$fields", [n.value, key], n), key, n.ctx), n)
+        return located(ast.Subscript(_call("$fields", [n.value, key], n), key, n.ctx), n)
     return _call("$attr", [n.value, key], n)
 
 
@@ -301,15 +207,15 @@ def _w_augassign(n, wrapped, walk):
     if helper is None or (op is ast.Add and _small_number(n.value)):
         return n
     if type(target) is ast.Name:
-        load = _loc(ast.Name(target.id, ast.Load()), target)
-        return _loc(ast.Assign([target], _call(helper, [load, n.value], n)), n)
+        load = located(ast.Name(target.id, ast.Load()), target)
+        return located(ast.Assign([target], _call(helper, [load, n.value], n)), n)
     if type(target) is ast.Subscript:
         key = target.slice
         if type(key) is ast.Slice:
-            none = _loc(ast.Constant(None), key)
+            none = located(ast.Constant(None), key)
             key = _call("$slice", [key.lower or none, key.upper or none, key.step or none], key)
-        args = [target.value, key, _loc(ast.Name(helper, ast.Load()), n), n.value]
-        return _loc(ast.Expr(_call("$iitem", args, n)), n)
+        args = [target.value, key, located(ast.Name(helper, ast.Load()), n), n.value]
+        return located(ast.Expr(_call("$iitem", args, n)), n)
     fail(n, "augmented assignment to this target is not allowed")
 
 
