@@ -9,10 +9,13 @@ template. The rest of a batch then goes to a fresh template.
 
 Templates are started from one long-lived thread (`spawn`), so that they die with the parent
 process (worker.py), isolated as `python -I -S` would be (`-s -S -P`: no user site, no site, no
-script or working folder on sys.path; an environment without PYTHON* variables) except for one
-variable that -I would ignore: PYTHONHASHSEED=0, so that str hashes, and with them the order of
-sets and everything built from it, are the same in every child, run and machine. BLAS libraries
-are told to use one thread (a forked child has no other thread, and may start none).
+script or working folder on sys.path), in `/`, with ENVIRONMENT as their whole environment:
+nothing of the user's (no API key, token or path) is inherited. PYTHONHASHSEED=0 (which -I
+would ignore) makes str hashes, and with them the order of sets and everything built from it,
+the same in every child, run and machine; PYTHONUTF8=1 and LC_CTYPE=C.UTF-8 fix the encoding
+(else Python would pick one from the locale). The template's argv holds the interpreter, the
+import root (sys.path), the parent's pid and the mode; then it enters its namespaces
+(confine.py; NAMESPACES) and reports them on its ready line (walls.py shows them).
 """
 from __future__ import annotations
 
@@ -44,10 +47,13 @@ READ_SIZE = 1 << 16  # bytes per read (a read allocates its whole size first)
 _ROOT = str(IMPORT_ROOT)
 ISOLATED = ("-s", "-S", "-P")  # -I without -E (see the module docstring)
 HASH_SEED = "0"
-ONE_THREAD = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS")
+# the template's whole environment: nothing of the user's (no key, token or path) is inherited
+ENVIRONMENT = {"PYTHONHASHSEED": HASH_SEED, "PYTHONUTF8": "1", "LC_CTYPE": "C.UTF-8"}
+NAMESPACES = True  # templates enter their namespaces (the tests turn it off to test seccomp alone)
 _BOOT = (
     "import sys; sys.path.insert(0, sys.argv[1]); "
-    "from sartco.program.worker import main; sys.exit(main(int(sys.argv[2]), '--breach' in sys.argv[3:]))"
+    "from sartco.program.worker import main; "
+    "sys.exit(main(int(sys.argv[2]), '--breach' in sys.argv[3:], '--no-namespaces' not in sys.argv[3:]))"
 )
 HOWS = (b"exit", b"signal", b"timeout", b"overflow", b"unconfined")
 
@@ -66,6 +72,8 @@ class Worker:
         self.lock = threading.Lock()
         self.room = 4096  # bytes the template's stdin pipe holds
         self.breach = breach
+        self.pid: int | None = None  # the template's pid (pid 1 of its namespace, whose parent is proc)
+        self.walls: list = []  # [name, up, why] of each namespace, as the template reported them
 
     # -- process ---------------------------------------------------------------------------
     def start(self):
@@ -73,7 +81,8 @@ class Worker:
             bpf = _filter()
         except Unconfinable as exc:
             raise _Dead(f"the sandbox cannot confine programs here: {exc}") from None
-        argv = [sys.executable, *ISOLATED, "-c", _BOOT, _ROOT, str(os.getpid())] + (["--breach"] if self.breach else [])
+        argv = [sys.executable, *ISOLATED, "-c", _BOOT, _ROOT, str(os.getpid())] + (["--breach"] if self.breach else []) \
+            + ([] if NAMESPACES else ["--no-namespaces"])
         self.proc = spawn(argv)
         self.proc.stdin.write(base64.b64encode(bpf) + b"\n")
         self.proc.stdin.flush()
@@ -89,14 +98,17 @@ class Worker:
         self.lines.clear()
         self.tail = b""
         first = self._readline(time.monotonic() + START_TIMEOUT)
-        if first != b'"ready"':
+        ready, _, report = (first or b"").partition(b" ")
+        if ready != b'"ready"':
             self.kill()
             if first is not None and first.startswith(b"unconfined: "):
                 raise _Dead("the sandbox cannot confine programs here: " + first[12:].decode("ascii", "replace"))
             raise _Dead("the sandbox worker did not start")
+        report = json.loads(report) if report else {}
+        self.pid, self.walls = report.get("pid", self.proc.pid), report.get("walls", [])
 
     def kill(self) -> int | None:
-        proc, self.proc = self.proc, None
+        proc, self.proc, self.pid = self.proc, None, None
         if proc is None:
             return None
         try:
@@ -223,8 +235,5 @@ def spawn(argv: list[str]) -> subprocess.Popen:
 
 
 def _environment() -> dict[str, str]:
-    """The parent's environment without PYTHON* variables, the fixed hash seed, one BLAS thread."""
-    env = {k: v for k, v in os.environ.items() if not k.startswith("PYTHON")}
-    env["PYTHONHASHSEED"] = HASH_SEED
-    env.update(dict.fromkeys(ONE_THREAD, "1"))
-    return env
+    """ENVIRONMENT, and nothing of the parent's."""
+    return dict(ENVIRONMENT)

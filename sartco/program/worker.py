@@ -272,21 +272,36 @@ class Template:
                 out.flush()
 
 
-def main(parent: int = 0, breach: bool = False) -> int:
-    """The template's life: the first line of stdin is the seccomp filter (BPF, base64), then
-    chunks of programs (see the module docstring)."""
-    from .confine import Unconfinable
+def main(parent: int = 0, breach: bool = False, namespaces: bool = True) -> int:
+    """The template's life: namespaces first (confine.enter_namespaces: this process becomes pid 1
+    of its own), then the first line of stdin is the seccomp filter (BPF, base64), then chunks of
+    programs (see the module docstring). The ready line says which namespaces hold."""
+    from . import confine
 
     _die_with_parent(parent)
+    refused = confine.enter_namespaces() if namespaces else "not asked for (a template without namespaces)"
     inp, out = sys.stdin.buffer, sys.stdout.buffer
     try:
         template = Template(base64.b64decode(inp.readline()), breach)
-    except Unconfinable as exc:
+    except confine.Unconfinable as exc:
         out.write(b"unconfined: " + str(exc).encode("ascii", "backslashreplace") + b"\n")
         out.flush()
         return 0
-    out.write(b'"ready"\n')
+    down = dict.fromkeys(confine.CLONE, refused)
+    pid = os.getpid()
+    if not refused:
+        pid = int(os.readlink("/proc/self"))  # this process's id outside (the host's /proc is still there)
+        try:
+            confine.empty_root()
+        except OSError as exc:
+            down["mount"] = f"the root stays the host's: {exc}"
+        try:
+            confine.drop_capabilities()
+        except OSError as exc:
+            out.write(b"unconfined: " + str(exc).encode("ascii", "backslashreplace") + b"\n")
+            out.flush()
+            return 0
+    walls = [[name, not down[name], down[name] or confine.HELD[name]] for name in confine.CLONE]
+    out.write(b'"ready" ' + json.dumps({"pid": pid, "walls": walls}).encode() + b"\n")
     out.flush()
     return template.serve(inp, out)
-
-
