@@ -58,7 +58,11 @@ nothing) it is the program's `runtime_error`, `resource_limit` or `timeout`; `ha
 the parent's and the template's own failure alone (no template could start, the kernel cannot
 confine programs here: then nothing runs, never unconfined). Messages escape control characters,
 lone surrogates and bidi overrides (sartco.text) before anything writes them; templates and
-children die with their parent process.
+children die with their parent process. A second wall stands alone behind these (issue 42): the
+template starts with an environment of three fixed variables, in new user, pid, net, ipc, uts and
+mount namespaces (it is pid 1 there, on an empty read-only root, without capabilities), so a
+program that got past the filter still sees no host process, file or network; `walls()` says which
+walls hold on this machine.
 
 Modules (each one's docstring has the details):
   allowed.py      the allowed subset as data: builtins, attribute names, node types and fields
@@ -78,7 +82,9 @@ Modules (each one's docstring has the details):
   namespaces.py   the paper protocol's namespace (the authors' exec: separate globals and locals;
                   the scorer's module registered in sys.modules, importable as the authors' was)
   json_module.py  the json stand-in (plain data, output counted against the length budget)
-  confine.py      the kernel's walls: the seccomp filter (compiled by libseccomp) and rlimits
+  confine.py      the kernel's walls: the seccomp filter (compiled by libseccomp) and rlimits;
+                  the namespaces, empty root and dropped capabilities of the template
+  walls.py        walls(): which walls hold on this machine (Wall(name, up, why)), summary()
   worker.py       the template process: one confined child per program, its end and answer
                   (mode "gold": the harness's own gold programs of a batch in one child)
   verdict.py      the parent decides: a child's end and put log -> Execution, the board replayed
@@ -106,6 +112,7 @@ from .compare import Comparison, compare, judge
 from .execution import MODULE, PAPER, Execution, Limits
 from .pool import LocalSandbox, shutdown
 from .sandbox import Sandbox, current, execute, execute_many, use
+from .walls import Wall, walls
 
 __all__ = ["execute", "execute_many", "shutdown", "compare", "judge", "Execution", "Comparison", "Limits",
-           "MODULE", "PAPER", "Sandbox", "LocalSandbox", "current", "use"]
+           "MODULE", "PAPER", "Sandbox", "LocalSandbox", "current", "use", "Wall", "walls"]

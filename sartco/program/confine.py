@@ -47,7 +47,7 @@ import resource
 import signal
 import tempfile
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
     from .execution import Limits
@@ -70,7 +70,7 @@ class Rule:
     name: str
     why: str
     arguments: str  # `when` in words, for docs/sandbox.md
-    when: tuple[tuple[tuple, ...], ...] = ()
+    when: tuple[tuple[tuple[Any, ...], ...], ...] = ()
 
 
 _OWN_FD = ((0, "lt", KEPT_FDS),)
@@ -211,7 +211,7 @@ _LINUX_CAPABILITY_VERSION_3 = 0x20080522
 PR_CAPBSET_DROP = 24
 
 
-def _libc():
+def _libc() -> ctypes.CDLL:
     libc = ctypes.CDLL(None, use_errno=True)
     libc.mount.argtypes = (ctypes.c_char_p, ctypes.c_char_p, ctypes.c_char_p, ctypes.c_ulong, ctypes.c_char_p)
     return libc
