@@ -10,7 +10,7 @@
 """
 import base64
 
-from sartco.program import driver
+from sartco.program import handle
 
 _STAND_IN = """
 import json, os, sys, time
@@ -37,15 +37,15 @@ OK_NO_BOARD = base64.b64encode(b'[true, null, "", 0, 0, []]').decode()
 
 
 def fake_worker(monkeypatch, misbehave: str) -> None:
-    monkeypatch.setattr(driver, "_BOOT", FAKE_WORKER.format(misbehave=misbehave))
+    monkeypatch.setattr(handle, "_BOOT", FAKE_WORKER.format(misbehave=misbehave))
 
 
 def answering_worker(monkeypatch, misbehave: str) -> None:
-    monkeypatch.setattr(driver, "_BOOT", ANSWERING_WORKER.format(misbehave=misbehave, answer=OK_NO_BOARD))
+    monkeypatch.setattr(handle, "_BOOT", ANSWERING_WORKER.format(misbehave=misbehave, answer=OK_NO_BOARD))
 
 
 def no_worker(monkeypatch, why: str) -> None:
     def cannot_start(self):
-        raise driver._Dead(why)
+        raise handle._Dead(why)
 
-    monkeypatch.setattr(driver.Worker, "start", cannot_start)
+    monkeypatch.setattr(handle.TemplateHandle, "start", cannot_start)

@@ -7,7 +7,7 @@
 
 Layer 1 (seccomp and rlimits, in every child) holds wherever a template starts: where it cannot,
 no program runs at all, and both are down with the reason. The template's environment is the
-parent's choice (driver.ENVIRONMENT) and always holds. Layer 2, the namespaces, is what the
+parent's choice (handle.ENVIRONMENT) and always holds. Layer 2, the namespaces, is what the
 template reported when it started (confine.enter_namespaces): up, or down with the kernel's
 refusal. walls() asks the local sandbox's first template, starting it if it is not running (a
 fraction of a second); `sartco execute`, `sartco bench-execute`, run.json and `sartco doctor`
@@ -17,8 +17,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from . import confine
-from .driver import ENVIRONMENT, Worker, _Dead
+from .child import confine
+from .handle import ENVIRONMENT, TemplateHandle, _Dead
 
 LIMITS = "address space, CPU time, no file size, 4 descriptors, no process, no core file"
 
@@ -46,7 +46,7 @@ def walls() -> tuple[Wall, ...]:
         return of(template, failure)
 
 
-def of(template: Worker, failure: str = "") -> tuple[Wall, ...]:
+def of(template: TemplateHandle, failure: str = "") -> tuple[Wall, ...]:
     """The walls of a started template (`failure`: why it could not start)."""
     environment = ", ".join(f"{k}={v}" for k, v in ENVIRONMENT.items())
     first = (

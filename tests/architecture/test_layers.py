@@ -16,6 +16,13 @@ LAYERS = [
     ("settings", ["sartco.settings"]),
     ("base", ["sartco.errors", "sartco.dataset", "sartco.episode", "sartco.text", "sartco.clock"]),
     ("world", ["sartco.world"]),
+    # sartco.program by side of the wall (docs/sandbox.md, "The sandbox's rooms"): the stand-ins a
+    # program calls, the check that reads a program before it runs, the child that runs it, then the
+    # contract (Limits, Execution) and the parent's side on top
+    ("program stand-ins", ["sartco.program.standins"]),
+    ("program check", ["sartco.program.check"]),
+    ("program contract", ["sartco.program.execution"]),
+    ("program child", ["sartco.program.child"]),
     ("program", ["sartco.program"]),
     ("data", ["sartco.instances", "sartco.follower"]),
     ("published", ["sartco.published"]),

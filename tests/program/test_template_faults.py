@@ -1,5 +1,5 @@
 """Nothing a program does makes its episode a harness fault (issue 42): a template that dies or
-falls silent while it runs a program is judged by evidence (driver.Worker._judged). The program
+falls silent while it runs a program is judged by evidence (handle.TemplateHandle._judged). The program
 runs again alone in a fresh template, whose answer is its verdict; failing there too, an empty
 program runs in another: answered, the program brought its templates down (its own failure);
 not answered, templates fail whatever runs (the harness's)."""
@@ -7,7 +7,9 @@ import pytest
 
 from harness_helpers import answering_worker
 
-from sartco.program import LocalSandbox, Limits, confine, driver
+from sartco.program import LocalSandbox, Limits
+from sartco.program import handle
+from sartco.program.child import confine
 from sartco.world import ErrorCode
 
 E = ErrorCode
@@ -17,7 +19,7 @@ PUT = "put(board, 'nut', 'red', 0, 0)"
 def _fake(monkeypatch, misbehave: str) -> LocalSandbox:
     """Stand-in templates that answer every program "ok, no board" unless `misbehave` ends them."""
     answering_worker(monkeypatch, misbehave)
-    monkeypatch.setattr(driver, "SLACK", 0.5)
+    monkeypatch.setattr(handle, "SLACK", 0.5)
     return LocalSandbox(workers=1)
 
 
@@ -62,8 +64,8 @@ def test_a_program_that_kills_its_real_template_is_its_own_failure(monkeypatch):
     breached program SIGKILLs its template; the verdict is its runtime_error, and the programs
     around it build their boards."""
     wrong = confine.RULES + tuple(confine.Rule(name, "a wrong rule", "any") for name in ("kill", "getppid"))
-    monkeypatch.setattr(driver, "NAMESPACES", False)
-    monkeypatch.setattr(driver, "_bpf", confine.compile_filter(wrong))
+    monkeypatch.setattr(handle, "NAMESPACES", False)
+    monkeypatch.setattr(handle, "_bpf", confine.compile_filter(wrong))
     sandbox = LocalSandbox(workers=1, breach=True)
     try:
         results = sandbox.execute_many([PUT, "import os, signal\nos.kill(os.getppid(), signal.SIGKILL)", PUT],

@@ -1,7 +1,7 @@
 """The kernel's walls, tested as if every Python-level check had fallen (issue 32).
 
 `breached(source)` runs a source with Python's real builtins and none of the sandbox's checks
-(worker.py's mode "breach", only in a template started for these tests), inside the same walls
+(child/template.py's mode "breach", only in a template started for these tests), inside the same walls
 as every program: a fresh forked child, rlimits, the seccomp filter. The template imported
 ctypes, socket, subprocess and threading beforehand, so a program attacks the kernel, not the
 absence of a module. A program reports what it saw by raising (the message comes back) or by
@@ -17,7 +17,7 @@ import time
 import pytest
 
 from sartco.program import LocalSandbox, Limits, execute
-from sartco.program.result import FORGED
+from sartco.program.child.result import FORGED
 from sartco.world import ErrorCode
 
 E = ErrorCode
@@ -157,7 +157,7 @@ def test_what_a_program_changes_is_absent_in_the_next(box):
     child; the next program, run normally, sees none of it."""
     attack = (
         "import sys, random, functools, typing\n"
-        "import sartco.world.rules as rules, sartco.world.board as boards, sartco.program.runtime as runtime\n"
+        "import sartco.world.rules as rules, sartco.world.board as boards, sartco.program.child.runtime as runtime\n"
         "rules.check = lambda *a, **k: None\n"
         "boards.MAX_SIDE = 10 ** 6\n"
         "runtime.put = lambda *a: None\n"
@@ -194,13 +194,14 @@ def test_no_process_outlives_its_program(box):
 
 
 def test_without_seccomp_nothing_runs(monkeypatch):
-    from sartco.program import confine, driver
+    from sartco.program import handle
+    from sartco.program.child import confine
 
     def unusable():
         raise confine.Unconfinable("libseccomp is not usable (test)")
 
-    monkeypatch.setattr(driver, "_bpf", None)
-    monkeypatch.setattr(driver, "compile_filter", unusable)
+    monkeypatch.setattr(handle, "_bpf", None)
+    monkeypatch.setattr(handle, "compile_filter", unusable)
     ex = _one_put_in_a_new_sandbox()
     assert (ex.ok, ex.error, ex.cells) == (False, E.HARNESS_ERROR, {})
     assert "cannot confine programs here" in ex.message and "libseccomp" in ex.message
@@ -208,10 +209,10 @@ def test_without_seccomp_nothing_runs(monkeypatch):
 
 def test_a_filter_that_does_not_hold_is_refused(monkeypatch):
     """A filter that allows everything: the template's self-test finds a file opened."""
-    from sartco.program import driver
+    from sartco.program import handle
 
     allow_all = bytes([0x06, 0, 0, 0, 0, 0, 0xFF, 0x7F])  # BPF_RET | BPF_K, SECCOMP_RET_ALLOW
-    monkeypatch.setattr(driver, "_bpf", allow_all)
+    monkeypatch.setattr(handle, "_bpf", allow_all)
     ex = _one_put_in_a_new_sandbox()
     assert (ex.ok, ex.error) == (False, E.HARNESS_ERROR) and "could open a file" in ex.message, ex
 
@@ -259,14 +260,15 @@ def _walls_up(box) -> bool:
 
 @pytest.fixture(scope="module", params=["both", "seccomp", "namespaces"])
 def walled(request):
-    from sartco.program import confine, driver
+    from sartco.program import handle
+    from sartco.program.child import confine
 
     with pytest.MonkeyPatch.context() as patch:
         if request.param == "seccomp":
-            patch.setattr(driver, "NAMESPACES", False)
+            patch.setattr(handle, "NAMESPACES", False)
         if request.param == "namespaces":
             wrong = confine.RULES + tuple(confine.Rule(name, "a wrong rule", "any") for name in WRONGLY_ALLOWED)
-            patch.setattr(driver, "_bpf", confine.compile_filter(wrong))
+            patch.setattr(handle, "_bpf", confine.compile_filter(wrong))
         sandbox = LocalSandbox(workers=1, breach=True)
         sandbox.execute_many(["x = 1"], cache=False)  # the template starts with the patches in place
         if request.param != "seccomp" and not _walls_up(sandbox):
@@ -480,10 +482,10 @@ def test_the_template_sees_no_host_file_or_process():
 
 
 def test_without_namespaces_the_walls_say_so(monkeypatch, capsys):
-    from sartco.program import driver
+    from sartco.program import handle
     from sartco.program.walls import of, summary
 
-    monkeypatch.setattr(driver, "NAMESPACES", False)
+    monkeypatch.setattr(handle, "NAMESPACES", False)
     sandbox = LocalSandbox(workers=1)
     try:
         assert sandbox.execute("put(board, 'nut', 'red', 0, 0)").ok

@@ -1,7 +1,7 @@
 """docs/sandbox.md's table of the seccomp allow-list is confine.RULES (issue 42): it cannot drift."""
 from pathlib import Path
 
-from sartco.program import confine
+from sartco.program.child import confine
 
 DOCS = Path(__file__).resolve().parents[2] / "docs" / "sandbox.md"
 
@@ -9,7 +9,7 @@ DOCS = Path(__file__).resolve().parents[2] / "docs" / "sandbox.md"
 def test_the_docs_table_is_the_filters_list():
     text = DOCS.read_text(encoding="utf-8")
     shown = text.split("<!-- syscalls: generated from confine.table() -->\n", 1)[1].split("\n<!-- /syscalls -->", 1)[0]
-    assert shown == confine.table(), "regenerate the table: python -c 'from sartco.program import confine; print(confine.table())'"
+    assert shown == confine.table(), "regenerate the table: python -c 'from sartco.program.child import confine; print(confine.table())'"
 
 
 def test_every_rule_says_why_and_with_which_arguments():

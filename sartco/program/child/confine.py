@@ -4,7 +4,7 @@ Layer 1, in every child: a seccomp filter and rlimits. These hold when every Pyt
 of the sandbox has fallen (a program that reached the real builtins, ctypes, any syscall): what
 the filter does not allow fails with EPERM, and the rlimits stop what the program may take. The
 parent compiles the filter once (`compile_filter()`, through libseccomp: the `pyseccomp` binding
-of the system's libseccomp.so.2); the template (worker.py) loads it (`Walls`), and each forked
+of the system's libseccomp.so.2); the template (template.py) loads it (`Walls`), and each forked
 child applies it with `Walls.apply(limits, base)` before the program's first line.
 
 The filter is an allow-list that names the arguments it allows (RULES, with the reason for each;
@@ -50,7 +50,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
-    from .execution import Limits
+    from ..execution import Limits
 
 KEPT_FDS = 4  # 0, 1, 2 (/dev/null) and 3 (the answer pipe)
 # flags the rules name (Linux's values, the same on every architecture this runs on)

@@ -1,4 +1,4 @@
-"""The parent's side of one template process (worker.py): start it, send it chunks of programs,
+"""The parent's side of one template process (child/template.py): start it, send it chunks of programs,
 read one line per program, and turn each into an Execution (verdict.py decides the board).
 
 The template enforces each program's wall time itself (it kills the child at Limits.wall_time)
@@ -8,7 +8,7 @@ harness's failure (`harness_error`, with the reason), never a program's: no prog
 template. The rest of a batch then goes to a fresh template.
 
 Templates are started from one long-lived thread (`spawn`), so that they die with the parent
-process (worker.py), isolated as `python -I -S` would be (`-s -S -P`: no user site, no site, no
+process (child/template.py), isolated as `python -I -S` would be (`-s -S -P`: no user site, no site, no
 script or working folder on sys.path), in `/`, with ENVIRONMENT as their whole environment:
 nothing of the user's (no API key, token or path) is inherited. PYTHONHASHSEED=0 (which -I
 would ignore) makes str hashes, and with them the order of sets and everything built from it,
@@ -36,7 +36,7 @@ from typing import Any
 from sartco.settings import IMPORT_ROOT
 from sartco.world import ErrorCode
 
-from .confine import Unconfinable, compile_filter
+from .child.confine import Unconfinable, compile_filter
 from .execution import MODULE, Execution, Limits
 from .verdict import decide, failed
 
@@ -53,18 +53,18 @@ ENVIRONMENT = {"PYTHONHASHSEED": HASH_SEED, "PYTHONUTF8": "1", "LC_CTYPE": "C.UT
 NAMESPACES = True  # templates enter their namespaces (the tests turn it off to test seccomp alone)
 _BOOT = (
     "import sys; sys.path.insert(0, sys.argv[1]); "
-    "from sartco.program.worker import main; "
+    "from sartco.program.child.template import main; "
     "sys.exit(main(int(sys.argv[2]), '--breach' in sys.argv[3:], '--no-namespaces' not in sys.argv[3:]))"
 )
 HOWS = (b"exit", b"signal", b"timeout", b"overflow", b"unconfined")
-CONTROL = b'""'  # the empty program: what a template that fails whatever runs fails on too (Worker._judged)
+CONTROL = b'""'  # the empty program: what a template that fails whatever runs fails on too (TemplateHandle._judged)
 
 
 class _Dead(Exception):
     """The template process is gone or unusable."""
 
 
-class Worker:
+class TemplateHandle:
     """One template process and the thread-safe state of reading its answers."""
 
     def __init__(self, breach: bool = False):
