@@ -8,7 +8,7 @@
 Layer 1 (seccomp and rlimits, in every child) holds wherever a template starts: where it cannot,
 no program runs at all, and both are down with the reason. The template's environment is the
 parent's choice (handle.ENVIRONMENT) and always holds. Layer 2, the namespaces, is what the
-template reported when it started (confine.enter_namespaces): up, or down with the kernel's
+template reported when it started (child/isolation.py): up, or down with the kernel's
 refusal. walls() asks the local sandbox's first template, starting it if it is not running (a
 fraction of a second); `sartco execute`, `sartco bench-execute`, run.json and `sartco doctor`
 show it.
@@ -17,7 +17,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .child import confine
+from .child import confine, isolation
 from .handle import ENVIRONMENT, TemplateHandle, _Dead
 
 LIMITS = "address space, CPU time, no file size, 4 descriptors, no process, no core file"
@@ -57,8 +57,19 @@ def of(template: TemplateHandle, failure: str = "") -> tuple[Wall, ...]:
     )
     reported = {name: (up, why) for name, up, why in template.walls}
     second = tuple(Wall(f"{name} namespace", *reported.get(name, (False, failure or "not reported by the template")))
-                   for name in confine.CLONE)
+                   for name in isolation.CLONE)
     return first + second
+
+
+def recorded() -> list[dict[str, object]] | None:
+    """walls() for run.json when this machine's sandbox runs the programs; None when another
+    sandbox is in use (its own machine's walls hold there)."""
+    from .pool import LocalSandbox
+    from .sandbox import current
+
+    if not isinstance(current(), LocalSandbox):
+        return None
+    return [{"name": w.name, "up": w.up, "why": w.why} for w in walls()]
 
 
 def summary(shown: tuple[Wall, ...]) -> str:

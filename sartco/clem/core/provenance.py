@@ -26,8 +26,8 @@ to the one that was playing, and has no `end`) and again when clemcore closes th
 The top level repeats what holds for the whole folder: game, model (the results folder name),
 sartco version and git commit (when the repository is a git checkout), clemcore version, the
 interpreter (python), the version of every package a score depends on (packages: SCORE_PACKAGES),
-the built-in players' and probes' seeds (seeds), the walls around each program's process
-(walls: sartco.program.walls, name/up/why each), the first session's instance file, models,
+the built-in players' and probes' seeds (seeds), the walls around programs (walls: name/up/why
+each, sartco.program.walls), the first session's instance file, models,
 generation and batch size, the first start and the last end, and the counts summed over sessions.
 clemcore's own results/<model-pair>/run.json is a different file (its timing per game) and is left alone.
 """
@@ -44,6 +44,7 @@ from importlib import metadata
 from pathlib import Path
 from urllib.parse import urlsplit, urlunsplit
 
+from sartco.program.walls import recorded as recorded_walls
 from sartco.settings import CHECKOUT, ERRING_FIX, ERRING_RATE, ERRING_SEED, workspace
 
 from .probes import PROBE_SEED
@@ -95,18 +96,7 @@ def environment() -> dict:
                        "executable": sys.executable},
             "packages": {name: _version(name) for name in SCORE_PACKAGES},
             "seeds": {"erring_players": ERRING_SEED, "erring_slip_rate": ERRING_RATE, "erring_fix_rate": ERRING_FIX,
-                      "function_probes": PROBE_SEED},
-            "walls": sandbox_walls()}
-
-
-def sandbox_walls() -> list[dict] | None:
-    """The walls around each program's process (sartco.program.walls) when this machine's sandbox
-    runs the programs; None when another sandbox is in use (its own machine's walls hold there)."""
-    from sartco.program import LocalSandbox, current, walls
-
-    if not isinstance(current(), LocalSandbox):
-        return None
-    return [{"name": w.name, "up": w.up, "why": w.why} for w in walls()]
+                      "function_probes": PROBE_SEED}, "walls": recorded_walls()}
 
 
 def git_commit() -> str | None:
