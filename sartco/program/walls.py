@@ -10,8 +10,8 @@ no program runs at all, and both are down with the reason. The template's enviro
 parent's choice (handle.ENVIRONMENT) and always holds. Layer 2, the namespaces, is what the
 template reported when it started (child/isolation.py): up, or down with the kernel's
 refusal. walls() asks the local sandbox's first template, starting it if it is not running (a
-fraction of a second); `sartco execute`, `sartco bench-execute`, run.json and `sartco doctor`
-show it.
+fraction of a second); `sartco execute`, `sartco bench-execute`, run.json (`recorded()`) and
+`sartco doctor` show it.
 """
 from __future__ import annotations
 
@@ -23,7 +23,7 @@ from .handle import ENVIRONMENT, TemplateHandle, _Dead
 LIMITS = "address space, CPU time, no file size, 4 descriptors, no process, no core file"
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Wall:
     name: str
     up: bool
@@ -42,7 +42,7 @@ def walls() -> tuple[Wall, ...]:
                 template.start()
             except (_Dead, OSError, ValueError) as exc:
                 template.kill()
-                failure = str(exc)
+                failure = str(exc).removeprefix("the sandbox cannot confine programs here: ")  # the reason itself
         return of(template, failure)
 
 
