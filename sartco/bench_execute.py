@@ -37,6 +37,7 @@ from sartco.program import pool
 from sartco.program import execute_many, shutdown
 from sartco.program.pool import default_workers
 from sartco.program.serve import serve
+from sartco.program.walls import summary, walls
 from sartco.published.files import require_data
 from sartco.published.gold import gold_programs
 
@@ -109,6 +110,7 @@ def run(args) -> int:
     n = len(programs)
     print(f"{n} gold programs ({len(firsts)} distinct sources, {sum(map(len, sources['all'])) / n:.0f} characters "
           f"on average), budgets on, {workers} worker process(es) unless said otherwise")
+    print(f"walls: {summary(walls())}")
     runs = [  # label, corpus, workers, cache
         (f"cold, {workers} worker(s), no cache", "all", workers, False),
         ("cold, 1 worker, no cache", "all", 1, False),

@@ -83,7 +83,7 @@ class LocalSandbox:
     def pids(self) -> list[int]:
         """The process ids of this sandbox's running templates."""
         with self._lock:
-            return [t.proc.pid for t in self._templates if t.proc is not None]
+            return [t.pid for t in self._templates if t.pid is not None]
 
     def close(self) -> None:
         """Kill and reap every template of this process (they restart on the next call) and forget

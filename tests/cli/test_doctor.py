@@ -26,7 +26,7 @@ def test_doctor_says_what_this_machine_can_do_and_whether_the_model_answers(tmp_
     assert done.returncode == 0, done.stdout + done.stderr
     assert [line.split(":")[0] for line in lines] == ["python", "walls", "data", "registries",
                                                        f"model {benchrun.MODEL} (openai_compatible)", "games", "sartco doctor"]
-    assert lines[1].startswith("walls: seccomp up; rlimits up; namespaces ")
+    assert lines[1].startswith("walls: seccomp up; rlimits up; environment up; user namespace ")
     assert f"answers at {server.base_url}" in lines[4]
     assert "cobot_instruct" in lines[5] and "cobot_describe" in lines[5]
     with StubServer({}, latency=0.0, hang=True) as hung:

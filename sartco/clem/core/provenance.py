@@ -26,7 +26,8 @@ to the one that was playing, and has no `end`) and again when clemcore closes th
 The top level repeats what holds for the whole folder: game, model (the results folder name),
 sartco version and git commit (when the repository is a git checkout), clemcore version, the
 interpreter (python), the version of every package a score depends on (packages: SCORE_PACKAGES),
-the built-in players' and probes' seeds (seeds), the first session's instance file, models,
+the built-in players' and probes' seeds (seeds), the walls around programs (walls: name/up/why
+each, sartco.program.walls), the first session's instance file, models,
 generation and batch size, the first start and the last end, and the counts summed over sessions.
 clemcore's own results/<model-pair>/run.json is a different file (its timing per game) and is left alone.
 """
@@ -43,6 +44,7 @@ from importlib import metadata
 from pathlib import Path
 from urllib.parse import urlsplit, urlunsplit
 
+from sartco.program.walls import recorded as recorded_walls
 from sartco.settings import CHECKOUT, ERRING_FIX, ERRING_RATE, ERRING_SEED, workspace
 
 from .probes import PROBE_SEED
@@ -94,7 +96,7 @@ def environment() -> dict:
                        "executable": sys.executable},
             "packages": {name: _version(name) for name in SCORE_PACKAGES},
             "seeds": {"erring_players": ERRING_SEED, "erring_slip_rate": ERRING_RATE, "erring_fix_rate": ERRING_FIX,
-                      "function_probes": PROBE_SEED}}
+                      "function_probes": PROBE_SEED}, "walls": recorded_walls()}
 
 
 def git_commit() -> str | None:
@@ -219,7 +221,7 @@ class RunRecorder:
         data = {"game": self.game_name, "model": path.parent.parent.name,
                 "sartco_version": self.software["packages"]["sartco-bench"], "git_commit": self.software["git_commit"],
                 "clemcore_version": self.software["packages"]["clemcore"], "python": self.software["python"],
-                "packages": self.software["packages"], "seeds": self.software["seeds"],
+                "packages": self.software["packages"], "seeds": self.software["seeds"], "walls": self.software["walls"],
                 "instance_file": first["instance_file"], "models": first["models"], "generation": first["generation"],
                 "batch_size": first.get("batch_size"), "start": first["start"], "end": sessions[-1]["end"],
                 "counts": {"sessions": len(sessions),

@@ -5,8 +5,8 @@ the harness's own gold programs of one batch may share a child: mode "gold" belo
 
 Protocol with the parent (driver.py), lines of bytes:
   parent -> template, once at start: the seccomp filter, a BPF program in base64 (confine.py)
-  template -> parent, once at start: "ready", or "unconfined: <why>" (then it exits: the kernel's
-      walls cannot be built here, and no program runs unconfined)
+  template -> parent, once at start: '"ready" {"pid": its pid outside, "walls": [[namespace, up, why]]}',
+      or "unconfined: <why>" (then it exits: the walls cannot be built here; no program runs unconfined)
   parent -> template, per chunk: a header {"limits": [...Limits fields...], "rows": R, "cols": C,
       "semantics": "module" | "paper", "items": K, "mode": "code" | "gold" | "breach"}, then K lines, each a
       program's source as a JSON string
@@ -294,22 +294,22 @@ def _fixed_layout() -> None:
         personality(current)
 
 
-def main(parent: int = 0, breach: bool = False) -> int:
-    """The template's life: the first line of stdin is the seccomp filter (BPF, base64), then
-    chunks of programs (see the module docstring)."""
-    from .confine import Unconfinable
+def main(parent: int = 0, breach: bool = False, namespaces: bool = True) -> int:
+    """The template's life: its namespaces (isolation.py), the seccomp filter (stdin's first line,
+    BPF in base64), chunks of programs (the module docstring); "ready" names the namespaces up."""
+    from . import confine, isolation
 
     _fixed_layout()
     _die_with_parent(parent)
+    refused = isolation.enter_namespaces() if namespaces else "not asked for (a template without namespaces)"
     inp, out = sys.stdin.buffer, sys.stdout.buffer
     try:
         template = Template(base64.b64decode(inp.readline()), breach)
-    except Unconfinable as exc:
+        pid, walls = isolation.finish(refused)
+    except (confine.Unconfinable, OSError) as exc:
         out.write(b"unconfined: " + str(exc).encode("ascii", "backslashreplace") + b"\n")
         out.flush()
         return 0
-    out.write(b'"ready"\n')
+    out.write(b'"ready" ' + json.dumps({"pid": pid, "walls": walls}).encode() + b"\n")
     out.flush()
     return template.serve(inp, out)
-
-
