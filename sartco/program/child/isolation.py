@@ -5,6 +5,10 @@ nothing for them. The template is pid 1 of its pid namespace: its children are t
 processes there, and pid 1 ignores every signal from inside that it does not handle (it handles
 none). Where the kernel refuses, the template goes on behind the first wall (confine.py) and
 reports which namespaces are down on its ready line (walls.py shows them).
+
+Also the template process's own settings, taken before anything else: death with its parent
+(`die_with_parent`) and one address layout in every start (`fixed_layout`: ASLR off for it
+alone, docs/sandbox.md says what that makes deterministic).
 """
 from __future__ import annotations
 
@@ -12,6 +16,7 @@ import ctypes
 import errno
 import os
 import signal
+import sys
 
 from .confine import PR_SET_PDEATHSIG, SIGKILL
 
@@ -134,3 +139,36 @@ def finish(refused: str) -> tuple[int, list[list[object]]]:
             down["mount"] = f"the root stays the host's: {exc}"
         drop_capabilities()
     return pid, [[name, not down[name], down[name] or HELD[name]] for name in CLONE]
+
+
+
+def die_with_parent(parent: int) -> None:
+    """SIGKILL when the thread that started this process (handle.py's spawner) ends."""
+    try:
+        ctypes.CDLL(None, use_errno=True).prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+    except (OSError, AttributeError):  # not Linux: the stdin pipe still ends the template
+        pass
+    if parent and os.getppid() != parent:  # the parent died before prctl
+        os._exit(0)
+
+
+ADDR_NO_RANDOMIZE = 0x0040000  # personality(2)
+
+
+def fixed_layout() -> None:
+    """Run the template (and so its children) with the address space laid out alike in every
+    start: ASLR off for it alone (personality(2), then exec again). Python hashes functions,
+    None (3.11), NaN, exceptions, ... by their address, which then no longer differs between
+    templates of one machine and build (docs/sandbox.md says what it covers). Where the kernel
+    refuses the flag, the template runs as it is."""
+    try:
+        personality = ctypes.CDLL(None, use_errno=True).personality
+    except (OSError, AttributeError):
+        return
+    current = personality(0xFFFFFFFF)
+    if current == -1 or current & ADDR_NO_RANDOMIZE or personality(current | ADDR_NO_RANDOMIZE) == -1:
+        return
+    try:
+        os.execv(sys.executable, sys.orig_argv)
+    except OSError:  # the flag is inherited by nothing then: run on as we are
+        personality(current)
