@@ -1,6 +1,6 @@
 """`sartco instances MODE [options]`: the games' instance files (games/<game>/in/) from a dataset,
 one mode per set of files, each file written by its own function in its game's package
-(sartco.games.instruct.instances, sartco.games.describe.instances):
+(sartco.games.instruct.instancegenerator, sartco.games.describe.instancegenerator):
 
   instruct             cobot_instruct in/instances.json, instances_ablations.json, instances_feedback.json,
                        instances_smoke.json (the committed files)
@@ -23,8 +23,8 @@ import sys
 from pathlib import Path
 
 from sartco.errors import UserError
-from sartco.games.describe import instances as describe
-from sartco.games.instruct import instances as instruct
+from sartco.games.describe import instancegenerator as describe
+from sartco.games.instruct import instancegenerator as instruct
 from sartco.settings import workspace
 
 from .legacy import parse

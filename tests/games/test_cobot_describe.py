@@ -14,7 +14,7 @@ import pytest
 
 from play_helpers import clem
 from sartco.cli import main as sartco_main
-from sartco.games.instruct.instances import InstructFile, described
+from sartco.games.instruct.instancegenerator import InstructFile, described
 
 REPO = Path(__file__).resolve().parents[2]
 SLICE = REPO / "games" / "cobot_describe" / "in" / "instances_slice.json"

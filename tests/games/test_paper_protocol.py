@@ -162,7 +162,7 @@ def test_report_flags_a_run_with_other_generation_settings(paper_episodes, play_
 def test_the_generator_makes_one_experiment_per_cell_with_the_papers_settings():
     from pathlib import Path
 
-    from sartco.games.instruct.instances import InstructFile, paper
+    from sartco.games.instruct.instancegenerator import InstructFile, paper
 
     GAME_DIR = Path(__file__).resolve().parents[2] / "games" / "cobot_instruct"
     gen = InstructFile(GAME_DIR, paper)

@@ -1,6 +1,6 @@
 """The fields of a game episode that come from one board record and a task, the same in every
 game that ends in a build (the game's instance generator adds its prompts and turns:
-sartco.games.instruct.episodes, sartco.games.describe.instances):
+sartco.games.instruct.episodes, sartco.games.describe.instancegenerator):
 
     board_fields(record, task) -> {board_id, board_type, object_type, combo_name, task, rows, cols,
                                    target, given_code, gold_code}

@@ -1,5 +1,5 @@
-"""What every instance file of both games shares (the files: sartco.games.instruct.instances,
-sartco.games.describe.instances; the command: sartco.instancegen): the records of a dataset split,
+"""What every instance file of both games shares (the files: sartco.games.instruct.instancegenerator,
+sartco.games.describe.instancegenerator; the command: sartco.instancegen): the records of a dataset split,
 the line that says what a written file holds. Each game writes its files itself (its generator's
 `generate`, which calls its own on_generate), so nothing here calls back into a game.
 

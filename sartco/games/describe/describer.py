@@ -2,7 +2,7 @@
 instructions a builder then follows (the paper's model-written instructions).
 
 - Describer                      the player: a clemcore model; `mock` / `rulebased` answer from
-                                 sartco.games.describe.dialogue_answers; `human` types in the terminal
+                                 sartco.games.describe.players; `human` types in the terminal
 - parse_instruction / ParseError the text under the "Instruction:" label (none -> aborted)
 - INSTRUCTION_SLOT / fill_builder_prompt   the builder prompt's place for the instruction
 - log_instruction / INSTRUCTION_KEY   the instruction as the game master passed it on, recorded
@@ -95,7 +95,7 @@ def log_instruction(game_master, text: str | None, combo_name: str, error: str |
 
 class Describer(SourcedPlayer):
     """The role that looks at the target and writes instructions (answers: what `mock` and
-    `rulebased` say, sartco.games.describe.dialogue_answers.describer_answers)."""
+    `rulebased` say, sartco.games.describe.players.describer_answers)."""
 
     def __init__(self, model, answers: AnswerSource, *, name: str | None = None):
         super().__init__(model, answers, game_role="Describer", name=name)

@@ -6,7 +6,7 @@ the object's name, the grid explanation; answer under "Instruction:"), sartco.ga
 Player 2, the Builder: cobot_instruct's builder prompt (with its in-context examples) holding the
 describer's instruction, sartco.clem.players.sourced; its code runs through sartco.clem.core.building.
 `clem run -g cobot_describe -m A B`: A describes, B builds; `-m A`: A plays both roles.
-Programmatic players (sartco.games.describe.dialogue_answers): `mock` and `rulebased` describe with the
+Programmatic players (sartco.games.describe.players): `mock` and `rulebased` describe with the
 episode's template instruction; as builders both are the rule-based follower reading the
 describer's text (never gold code); `erring` omits and garbles pieces as describer and slips as
 builder (sartco.games.describe.erring_dialogue).
@@ -43,7 +43,7 @@ from sartco.games.describe.describer import Describer, fill_builder_prompt, log_
 from sartco.games.describe.dialogue import (DialogueScorer, answer_message, correction_message, parse_answer,
                                            parse_builder_answer, parse_review, question_message, review_message,
                                            settings_of)
-from sartco.games.describe.dialogue_answers import builder_answers, describer_answers
+from sartco.games.describe.players import builder_answers, describer_answers
 from sartco.games.describe.turns import BuilderTurn, Dialogue, DialogueLog, Move, Said, State
 from sartco.clem.players.sourced import Builder
 from sartco.episode import ATTEMPTS_KEY, DIALOGUE_KEY, DescribeEpisode

@@ -1,4 +1,4 @@
-"""The base of cobot_instruct's instance generators (sartco.games.instruct.instances and
+"""The base of cobot_instruct's instance generators (sartco.games.instruct.instancegenerator and
 sartco.games.instruct.fresh): one experiment per cell, with or without execution feedback, named by
 sartco.dataset.experiment_name, and its episodes from board records, each with its in-context
 examples, game_id counted from 0 in each experiment."""
