@@ -24,6 +24,7 @@ from pathlib import Path
 
 from sartco.errors import UserError
 from sartco.games.describe import instancegenerator as describe
+from sartco.games.instruct import fresh
 from sartco.games.instruct import instancegenerator as instruct
 from sartco.settings import workspace
 
@@ -48,7 +49,7 @@ MODES = {
                                                               instruct.instances_published_feedback],
                            "the human- and model-written cells from the imported published data"),
     "instruct-paper": ("cobot_instruct", lambda options: [instruct.instances_paper], "the paper protocol (../shared)"),
-    "instruct-fresh": ("cobot_instruct", lambda options: [instruct.instances_fresh],
+    "instruct-fresh": ("cobot_instruct", lambda options: [fresh.instances_fresh],
                        "the published test boards beside fresh boards of FRESH_SEED"),
     "instruct-train": ("cobot_instruct", lambda options: [instruct.instances_train], "the train split, for training"),
     "instruct-describers": ("cobot_instruct", lambda options: [instruct.instances_describers],

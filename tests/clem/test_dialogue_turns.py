@@ -8,7 +8,7 @@ import json
 import pytest
 
 from play_helpers import REPO
-from sartco.clem.core.parsing import ParseError
+from sartco.clem.core.errors import ParseError
 from sartco.games.describe.dialogue import parse_builder_answer, parse_review, settings_of
 from sartco.games.describe.players import correction_text
 from sartco.games.describe.turns import BuilderTurn, Dialogue, DialogueLog, Said, State
