@@ -15,7 +15,7 @@ docs/ARCHITECTURE.md):
             (function probes), card.ScoreCard, transcript.MarkdownTranscript, pictures.attach_all,
             instance_checks (an instance file's fields and values, checked before play; check:
             `sartco check-instances`), instance_files (what both games' instance files share:
-            the generators' base, write, board_fields), provenance (run.json written), runs
+            the generators' base, board_fields, written), provenance (run.json written), runs
             (run.json read back), sandbox (the one door into sartco.program)
 - players   sourced.Builder / SourcedPlayer (a built-in player's answers come from one answer
             source chosen when it is made), answers (Scripted, GoldCode = mock, InstructFollower =

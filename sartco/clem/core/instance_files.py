@@ -6,8 +6,8 @@ on_generate), so nothing here calls back into a game.
 
     InstanceGenerator                     the games' generator base: it never writes an instance
                                           file without episodes (require_episodes)
-    write(gen, name, seed, **kwargs)      write in/<name> through gen, say what it holds: the one
-                                          way both games write a file
+    written(gen, path) -> path            one line: the file, its experiments and episodes (after
+                                          each game's write(gen, name, seed, **kwargs))
     board_fields(record, task)            an episode's fields from one board record and a task
     stamp(gen)                            the file's `generator` field: which release wrote it
     records(folder, files, kind, split)   one split's records (UserError if missing)
@@ -51,10 +51,11 @@ class InstanceGenerator(GameInstanceGenerator):
         return super().store_file(data, file_name, sub_dir=sub_dir)
 
 
-def write(gen: GameInstanceGenerator, name: str, seed: int, **kwargs) -> str:
-    """Write in/<name> of gen's game folder (clemcore's `generate`: it seeds random and numpy with
-    the seed, then calls gen.on_generate(seed, **kwargs)) and say in one line what it holds; the path."""
-    path = gen.generate(name, seed=seed, **kwargs)
+def written(gen: GameInstanceGenerator, path: str) -> str:
+    """Say in one line what the file at `path`, just written by gen.generate (clemcore's: it seeds
+    random and numpy with the seed, then calls gen.on_generate), holds; return its path. Each game's
+    `write(gen, name, seed, **kwargs)` calls gen.generate itself (so that nothing here calls back
+    into a game) and then this."""
     exps = gen.instances["experiments"]
     print(f"{path}: {len(exps)} experiments, {sum(len(e['game_instances']) for e in exps)} episodes")
     return path

@@ -31,7 +31,7 @@ from __future__ import annotations
 from argparse import Namespace
 from pathlib import Path
 
-from sartco.clem.core.instance_files import InstanceGenerator, board_fields, records, spread, stamp, write
+from sartco.clem.core.instance_files import InstanceGenerator, board_fields, records, spread, stamp, written
 from sartco.dataset import BOARD_KINDS, DESCRIBED_TASK, experiment_name
 from sartco.episode import DescribeEpisode, DescribeExperiment
 from sartco.instances.examples import select_examples
@@ -83,6 +83,11 @@ class DescribeFile(InstanceGenerator):
     def on_generate(self, seed: int, **kwargs):
         modes_file(self, seed, **kwargs)
         stamp(self)
+
+
+def write(gen: InstanceGenerator, name: str, seed: int, **kwargs) -> str:
+    """Write in/<name> through gen (on_generate(seed, **kwargs)), say what it holds (as cobot_instruct's)."""
+    return written(gen, gen.generate(name, seed=seed, **kwargs))
 
 
 def _files(options: Namespace, modes: tuple[str, ...], per_experiment: int | None) -> dict:

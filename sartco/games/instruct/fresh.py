@@ -17,14 +17,13 @@ from __future__ import annotations
 from argparse import Namespace
 from pathlib import Path
 
-from sartco.clem.core.instance_files import write
 from sartco.errors import UserError
 from sartco.instances.config import parse_config
 from sartco.instances.fresh import board_keys, fresh_boards
 from sartco.instances.storage import load_dataset
 from sartco.settings import shown
 
-from .instancegenerator import CELLS, DEFAULT_PUBLISHED, InstructGenerator
+from .instancegenerator import CELLS, DEFAULT_PUBLISHED, InstructGenerator, write
 
 SOURCE = "template"
 

@@ -28,9 +28,8 @@ name, so its results, and clem eval's clemscore, never mix with the others):
   instances_fresh.json      cobot_instruct_fresh (gitignored; sartco.games.instruct.fresh): each template
                             cell's published test boards beside as many fresh boards of a seed.
 
-Experiment names: sartco.dataset.experiment_name, the one rule of both games (variants here:
-examples_<k> or without_<section>, feedback, train, published or fresh<SEED>; paper_ prefixed).
-Each episode: instruct_episode; InstructGenerator: the base of this file's generators and fresh's.
+Experiment names: sartco.dataset.experiment_name (variants: examples_<k>, without_<section>, feedback,
+train, published, fresh<SEED>; paper_ prefixed). Episodes: instruct_episode; InstructGenerator: the base.
 In-context examples always come from the generated dataset's train split (the published data has
 no simple-board train split). game_id counts from 0 in each experiment. Each experiment and the file
 record the dataset (dataset_info: version, source, seed, path) and this generator's seed.
@@ -42,7 +41,7 @@ from argparse import Namespace
 from pathlib import Path
 from typing import Callable
 
-from sartco.clem.core.instance_files import InstanceGenerator, board_fields, records, stamp, write
+from sartco.clem.core.instance_files import InstanceGenerator, board_fields, records, stamp, written
 from sartco.dataset import (BOARD_KINDS, DESCRIBED_TASK, REGULAR_COMPLEX, REGULAR_SIMPLE, SIMPLE, BoardKind,
                             board_kind, experiment_name)
 from sartco.episode import InstructEpisode, InstructExperiment
@@ -129,6 +128,11 @@ class InstructFile(InstructGenerator):
     def on_generate(self, seed: int, **kwargs):
         self.build(self, seed, **kwargs)
         stamp(self)
+
+
+def write(gen: InstanceGenerator, name: str, seed: int, **kwargs) -> str:
+    """Write in/<name> through gen (on_generate(seed, **kwargs)), say what it holds (as cobot_describe's)."""
+    return written(gen, gen.generate(name, seed=seed, **kwargs))
 
 
 def dataset_info(manifest: dict, path: Path, seed: int, n_examples: int, examples_from: dict | None = None) -> dict:
@@ -252,8 +256,7 @@ def paper(gen: InstructFile, seed: int, dataset_dir: Path, published_dir: Path |
 
 # one function per file: (options, game folder) -> the path written
 def instances(options: Namespace, game_dir: Path) -> str:
-    return write(InstructFile(game_dir, table3), "instances.json", options.seed, dataset_dir=options.dataset,
-                 n_examples=options.examples)
+    return write(InstructFile(game_dir, table3), "instances.json", options.seed, dataset_dir=options.dataset, n_examples=options.examples)
 
 
 def instances_ablations(options: Namespace, game_dir: Path) -> str:
@@ -292,6 +295,5 @@ def instances_describers(options: Namespace, game_dir: Path) -> str:
 
 
 def instances_paper(options: Namespace, game_dir: Path) -> str:
-    return write(InstructFile(game_dir, paper), "instances_paper.json", options.seed, dataset_dir=options.dataset,
-                 published_dir=options.paper_data)
+    return write(InstructFile(game_dir, paper), "instances_paper.json", options.seed, dataset_dir=options.dataset, published_dir=options.paper_data)
 
