@@ -117,7 +117,7 @@ def instance_file_info(path: Path) -> dict:
     try:
         data = json.loads(path.read_text(encoding="utf-8"))
     except (OSError, ValueError):
-        data = None  # checked before anything is played (benchmark.check_instances)
+        data = None  # checked before anything is played (instance_checks.check_instances)
     made = {k: data[k] for k in GENERATION_FIELDS if k in data} if isinstance(data, dict) else {}
     dataset = made.get("dataset")
     manifest = root / dataset["path"] / "manifest.json" if isinstance(dataset, dict) and isinstance(
