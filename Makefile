@@ -10,7 +10,15 @@ CONSTRAINTS ?= constraints.txt
 
 .PHONY: install main test test-train lint local upgrade-check clean-results
 
+## The Pythons it installs on: pyproject.toml's requires-python (">=3.11,<3.13"), read here, so that
+## another interpreter stops with one line before pip fails to find clemcore.
+PY_MIN := $(shell sed -n 's/^requires-python = ">=3\.\([0-9]*\),<3\.[0-9]*"/\1/p' pyproject.toml)
+PY_END := $(shell sed -n 's/^requires-python = ">=3\.[0-9]*,<3\.\([0-9]*\)"/\1/p' pyproject.toml)
+
 $(STAMP): pyproject.toml setup.py $(CONSTRAINTS)
+	@v=$$($(PYTHON) -c 'import sys; print("%d.%d" % sys.version_info[:2])' 2>/dev/null); m=$${v#3.}; \
+	  case "$$v" in 3.*) [ "$$m" -ge $(PY_MIN) ] && [ "$$m" -lt $(PY_END) ] && exit 0;; esac; \
+	  echo "make install: $(PYTHON) is Python $${v:-unknown}; sartco-bench installs on Python 3.$(PY_MIN) to 3.$$(($(PY_END) - 1)) only (pyproject.toml's requires-python: clemcore 3.7, which it runs on, declares <3.$(PY_END) in every release); give one: make install PYTHON=python3.$(PY_MIN)" >&2; exit 2
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install -q --upgrade pip
 	$(BIN)/python -m pip install -q $(if $(CONSTRAINTS),-c $(CONSTRAINTS)) -e ".[dev,ray]"

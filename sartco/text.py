@@ -7,7 +7,9 @@ transcripts raw), bidirectional overrides (they make shown text read otherwise t
 and keeps everything else, tabs and line breaks included; the result is printable and strict
 UTF-8, and escaping it again changes nothing. Where the exact text matters, the caller keeps it
 beside the escaped one as ASCII JSON (`exact_json`). `one_line` is the same escape for a
-message of one line (tabs and line breaks become spaces). Free of dependencies: the bottom layer.
+message of one line: tabs, \\n and \\r become spaces and the other line breaks of
+str.splitlines() are escaped too (\\v, \\f, \\x1c-\\x1e and \\x85 already are; U+2028, U+2029),
+so a message is one line to every reader. Free of dependencies: the bottom layer.
 """
 from __future__ import annotations
 
@@ -17,6 +19,7 @@ import re
 # C0 controls but tab and line breaks, DEL, C1 controls, surrogates, bidi embeddings/overrides/isolates
 UNSAFE = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\x7f-\x9f\ud800-\udfff\u202a-\u202e\u2066-\u2069]")
 _BREAKS = re.compile("[\t\n\r]")
+_SEPARATORS = re.compile("[\u2028\u2029]")  # the line breaks of str.splitlines() that escape keeps, but \n and \r
 
 
 def _visible(match: re.Match[str]) -> str:
@@ -30,8 +33,9 @@ def escape(text: str) -> str:
 
 
 def one_line(text: str) -> str:
-    """`escape` for a message of one line: tabs and line breaks become spaces."""
-    return _BREAKS.sub(" ", escape(text))
+    """`escape` for a message of one line: tabs, \\n and \\r become spaces, every other line break
+    a visible escape (`\\u2028`): str.splitlines() finds one line."""
+    return _SEPARATORS.sub(_visible, _BREAKS.sub(" ", escape(text)))
 
 
 def exact_json(text: str) -> str | None:

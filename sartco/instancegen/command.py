@@ -9,8 +9,8 @@ one mode per set of files, each file written by its own function in its game's p
   instruct-fresh FRESH_SEED  in/instances_fresh.json: published beside fresh boards of FRESH_SEED
   instruct-train       in/instances_train.json, the train split
   instruct-describers DIR  in/instances_describers.json, from `sartco import-instructions`
-  describe             cobot_describe in/instances.json, instances_dialogue.json (and --slice N: their
-                       _slice files, the committed ones use --slice 2)
+  describe             cobot_describe in/instances.json, instances_smoke.json, instances_dialogue.json
+                       (and --slice N: the _slice files, the committed ones use --slice 2)
 
 The game scripts (games/*/instancegenerator.py) are the same command with the flags they always had
 (script_main; sartco.instancegen.legacy). A wrong value is a UserError: one line naming the option
@@ -36,7 +36,7 @@ GAMES = workspace() / "games"
 
 def _describe_files(options: argparse.Namespace) -> list:
     slices = options.slice is not None
-    return [describe.instances, *[describe.instances_slice] * slices,
+    return [describe.instances, describe.instances_smoke, *[describe.instances_slice] * slices,
             describe.instances_dialogue, *[describe.instances_dialogue_slice] * slices]
 
 
@@ -83,7 +83,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
                                    ("instruct-paper", "paper_data", False), ("instruct-fresh", "fresh", True),
                                    ("instruct-fresh", "fresh_episodes", False),
                                    ("instruct-train", "train_episodes", False), ("instruct-describers", "describers", True),
-                                   ("describe", "questions", False), ("describe", "corrections", False),
+                                   ("describe", "smoke", False), ("describe", "questions", False), ("describe", "corrections", False),
                                    ("describe", "slice", False)]:
         add_option(modes[mode], name, positional=positional)
 

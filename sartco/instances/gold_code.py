@@ -14,7 +14,7 @@ def run_gold_code(records: list[BoardRecord]) -> list[dict[str, Execution]]:
     """Per record, the execution of each code style's total_code (in the record's style order); the
     programs run in one batch per board size. They are a dataset's gold code, never a model's, so
     the local sandbox may run a chunk of them in one confined child (its mode "gold": the same
-    verdicts as a child per program, sartco.program.gold)."""
+    verdicts as a child per program, sartco.program.child.batch)."""
     jobs: dict[tuple[int, int], list[tuple[int, str, str]]] = {}
     for i, r in enumerate(records):
         for style, code in r["code"].items():

@@ -14,7 +14,7 @@ Per turn, over the keys present in both gold and prediction (output; or function
   rounded to 3 decimals, > 0.5; an empty prediction fails. Table 3's CB is this pass rate.
 - ES: each key but usage runs alone on a fresh 8x8 board through sartco.program.execute (the
   sandbox; never exec) with PAPER semantics (the authors' exec inside a function: separate
-  globals and locals, the board passed in is the one scored; sartco.program.namespaces), after dropping one trailing newline, ";", "." or ","; regular boards get
+  globals and locals, the board passed in is the one scored; sartco.program.child.namespaces), after dropping one trailing newline, ";", "." or ","; regular boards get
   the sample's gold object function + "\n" in front of both gold and prediction. A program
   containing the text "while" fails (the authors' scorer refused it: category `forbidden`,
   message "While loop not supported"); a program that raises fails with its ErrorCode; a board

@@ -10,7 +10,7 @@ driver receives plain Executions, in input order.
 Ray is an optional dependency (the `ray` extra); a missing Ray is one clear error. A task that
 fails (a node lost, Ray's own error) is the harness's: its programs get `harness_error` with
 Ray's reason, never the program's error. Results equal the local sandbox's
-(tests/program/test_cluster.py).
+(tests/program/test_conformance.py).
 """
 from __future__ import annotations
 

@@ -1,5 +1,5 @@
 """The local sandbox: template processes on this machine, each forking one confined child per
-program (worker.py), batches split over them; and the module-level execute() / execute_many()
+program (child/template.py), batches split over them; and the module-level execute() / execute_many()
 of the sandbox in use (sandbox.py).
 
 `LocalSandbox.dispatch` sends programs in chunks (a header line + one line per program) to up to
@@ -29,12 +29,12 @@ from collections import OrderedDict
 
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, Board, ErrorCode, WorldError
 
-from .driver import Worker
+from .handle import TemplateHandle
 from .execution import MODULE, SEMANTICS, Execution, Limits, not_a_str
 from .verdict import failed
 
 BATCH = 32  # a call with fewer items than this uses one template
-GOLD = "gold"  # execute_many's mode for the harness's own reference programs (worker.py)
+GOLD = "gold"  # execute_many's mode for the harness's own reference programs (child/template.py)
 MEMO = 50_000  # verdicts a LocalSandbox keeps for repeated programs (a few KB each)
 TRANSIENT = frozenset({ErrorCode.TIMEOUT, ErrorCode.RESOURCE_LIMIT, ErrorCode.HARNESS_ERROR})
 MemoKey = tuple[str, int, int, Limits, str, str]  # source, rows, cols, limits, semantics, mode
@@ -46,12 +46,12 @@ def default_workers() -> int:
 
 class LocalSandbox:
     """The Sandbox of this machine (sandbox.py): forked, confined children of local templates.
-    `breach=True` only for the assume-breach tests (worker.py's mode "breach")."""
+    `breach=True` only for the assume-breach tests (child/template.py's mode "breach")."""
 
     def __init__(self, workers: int | None = None, breach: bool = False):
         self.workers = workers
         self.breach = breach
-        self._templates: list[Worker] = []
+        self._templates: list[TemplateHandle] = []
         self._pid = os.getpid()
         self._lock = threading.Lock()
         self._memo: OrderedDict[MemoKey, Execution] = OrderedDict()
@@ -72,12 +72,12 @@ class LocalSandbox:
             while len(self._memo) > MEMO:
                 self._memo.popitem(last=False)
 
-    def templates(self, n: int) -> list[Worker]:
+    def templates(self, n: int) -> list[TemplateHandle]:
         with self._lock:
             if self._pid != os.getpid():  # a forked child must not share its parent's templates
                 self._templates, self._pid = [], os.getpid()
             while len(self._templates) < n:
-                self._templates.append(Worker(self.breach))
+                self._templates.append(TemplateHandle(self.breach))
             return self._templates[:n]
 
     def pids(self) -> list[int]:
@@ -108,7 +108,7 @@ class LocalSandbox:
             shares[w].append(i)
             load[w] += len(item)
 
-        def drive(template: Worker, share: list[int]):
+        def drive(template: TemplateHandle, share: list[int]):
             with template.lock:
                 answers = template.run([items[i] for i in share], rows, cols, limits, semantics, mode)
                 for i, answer in zip(share, answers):
@@ -131,7 +131,7 @@ class LocalSandbox:
         """Run many programs, each in its own confined process on its own fresh board; results in
         input order. `semantics`: MODULE (a script's namespace) or PAPER (the authors' exec, see
         namespaces.py). `mode` GOLD: the harness's own reference programs (an instance's gold
-        code, never a model's), which may share a child per chunk (worker.py, mode "gold"); their
+        code, never a model's), which may share a child per chunk (child/template.py, mode "gold"); their
         verdicts are those of mode "code" and are kept as such."""
         if semantics not in SEMANTICS:
             raise ValueError(f"unknown semantics {semantics!r}; expected one of {', '.join(SEMANTICS)}")
@@ -172,7 +172,7 @@ class LocalSandbox:
 
     def execute(self, code: str, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, limits: Limits | None = None, *,
                 semantics: str = MODULE) -> Execution:
-        """Run one program on a fresh rows x cols board (see the package docstring)."""
+        """Run one program on a fresh rows x cols board (docs/sandbox.md: the contract)."""
         return self.execute_many([code], rows, cols, limits, workers=1, semantics=semantics)[0]
 
 

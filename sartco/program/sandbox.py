@@ -6,7 +6,7 @@
         execute_many(programs, rows, cols, limits, *, semantics) -> list[Execution]   # input order
         close() -> None
 
-Every implementation keeps the contract of the package docstring: one fresh confined process
+Every implementation keeps the contract of docs/sandbox.md: one fresh confined process
 per program, the board decided by the caller's side from a put log, `harness_error` only for the
 sandbox's own failures, no exception out of execute / execute_many. `LocalSandbox` (pool.py) is
 this machine's; a remote or cluster sandbox implements the same three methods and is put in use

@@ -1,6 +1,6 @@
 """The parent decides: a child's end and answer -> an Execution, the board replayed here.
 
-A child (worker.py) sends only plain values: [ok, code or None, message, rows, cols, log], `log`
+A child (child/template.py) sends only plain values: [ok, code or None, message, rows, cols, log], `log`
 a flat list shape, colour, x, y, ... (runtime.answer). Nothing of the child's objects is trusted:
 the parent checks every value's exact type, makes its own board of that size and replays the
 log with the world's own `put` (sartco.world.rules), so the cells of every Execution are what put
@@ -13,7 +13,7 @@ built here, whatever happened in the child. How a child ended is the program's d
   `harness_error` claimed by the child), a message too long: `runtime_error`;
 - a log that put refuses, or a board over the world's limits: `forbidden`, "the board was changed
   outside put", with what put built of the log up to there.
-`harness_error` is the parent's and the template's own failure alone (driver.py): a child that
+`harness_error` is the parent's and the template's own failure alone (handle.py): a child that
 ended before its walls were up ("unconfined": no program ran), a template that could not start,
 died or answered garbage. No program can produce it.
 """
@@ -25,8 +25,8 @@ import signal
 from sartco.world import Board, ErrorCode, WorldError, put
 
 from .execution import Execution, clean
-from .result import FORGED
-from .worker import OUT_OF_MEMORY
+from .child.result import FORGED
+from .child.template import OUT_OF_MEMORY
 
 MESSAGE_CHARS = 1 << 16  # far above any message runtime.py writes (400 characters, escaped, + a line number)
 _CODES = {code.value: code for code in ErrorCode}

@@ -16,6 +16,13 @@ LAYERS = [
     ("settings", ["sartco.settings"]),
     ("base", ["sartco.errors", "sartco.dataset", "sartco.episode", "sartco.text", "sartco.clock"]),
     ("world", ["sartco.world"]),
+    # sartco.program by side of the wall (docs/sandbox.md, "The sandbox's rooms"): the stand-ins a
+    # program calls, the check that reads a program before it runs, the child that runs it, then the
+    # contract (Limits, Execution) and the parent's side on top
+    ("program stand-ins", ["sartco.program.standins"]),
+    ("program check", ["sartco.program.check"]),
+    ("program contract", ["sartco.program.execution"]),
+    ("program child", ["sartco.program.child"]),
     ("program", ["sartco.program"]),
     ("data", ["sartco.instances", "sartco.follower"]),
     ("published", ["sartco.published"]),
@@ -33,7 +40,7 @@ LAYERS = [
     ("protocols", ["sartco.protocols"]),
     # rewards for RL trainers over our protocol's episodes (ids of sartco.protocols)
     ("reward", ["sartco.reward"]),
-    ("top", ["sartco.report", "sartco.instancegen", "sartco.cli", "sartco.__main__", "sartco.bench_execute", "sartco.suite", "sartco.schedule", "games", "tools"]),
+    ("top", ["sartco.report", "sartco.instancegen", "sartco.cli", "sartco.__main__", "sartco.bench_execute", "sartco.suite", "sartco.suite_worker", "sartco.schedule", "sartco.doctor", "games", "tools"]),
 ]
 TOP = len(LAYERS) - 1  # the entry points may use each other (the `sartco` command dispatches to them)
 RANK = {package: rank for rank, (_, packages) in enumerate(LAYERS) for package in packages}

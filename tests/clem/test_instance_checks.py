@@ -90,7 +90,7 @@ def benchmark_of(game: str):
 
 @pytest.mark.parametrize("game, committed", [
     ("cobot_instruct", {"instances": 650, "instances_ablations": 850, "instances_feedback": 650, "instances_smoke": 10}),
-    ("cobot_describe", {"instances": 390, "instances_slice": 6, "instances_dialogue": 1170,
+    ("cobot_describe", {"instances": 390, "instances_smoke": 6, "instances_slice": 6, "instances_dialogue": 1170,
                         "instances_dialogue_slice": 18}),
 ])
 def test_every_instance_file_passes(game, committed):

@@ -5,7 +5,7 @@
                                         `n` the batch's item count): garbage answers, an exit
 - no_worker(monkeypatch, why)           no worker can start ("sandbox unavailable: <why>")
 """
-from sartco.program import driver
+from sartco.program import handle
 
 FAKE_WORKER = """
 import json, sys
@@ -23,11 +23,11 @@ while True:
 
 
 def fake_worker(monkeypatch, misbehave: str) -> None:
-    monkeypatch.setattr(driver, "_BOOT", FAKE_WORKER.format(misbehave=misbehave))
+    monkeypatch.setattr(handle, "_BOOT", FAKE_WORKER.format(misbehave=misbehave))
 
 
 def no_worker(monkeypatch, why: str) -> None:
     def cannot_start(self):
-        raise driver._Dead(why)
+        raise handle._Dead(why)
 
-    monkeypatch.setattr(driver.Worker, "start", cannot_start)
+    monkeypatch.setattr(handle.TemplateHandle, "start", cannot_start)

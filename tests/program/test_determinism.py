@@ -3,7 +3,7 @@
 Order-sensitive programs (set and dict-of-set iteration, hash() of a str) run in several fresh
 workers of this process and in fresh processes whose own environment differs (another or a random
 hash seed, PYTHONOPTIMIZE, PYTHONPATH): one answer each. Workers get PYTHONHASHSEED=0 and
-nothing else of the parent's PYTHON* variables (driver.py).
+nothing else of the parent's PYTHON* variables (handle.py).
 """
 import json
 import os

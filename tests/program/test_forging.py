@@ -19,9 +19,10 @@ import typing
 
 import pytest
 
-from sartco.program import Limits, execute, judge, runtime
+from sartco.program import Limits, execute, judge
+from sartco.program.child import runtime
 from sartco.program.lines import encode
-from sartco.program.result import FORGED, board_result
+from sartco.program.child.result import FORGED, board_result
 from sartco.world import Board, ErrorCode, WorldError, put
 
 E = ErrorCode

@@ -1,4 +1,4 @@
-"""Mode "gold" (worker.py): the harness's own reference programs of one batch share a confined
+"""Mode "gold" (child/template.py): the harness's own reference programs of one batch share a confined
 child, and every verdict equals the one a child per program gives; a model's program never
 shares a child (the probes run a model's function in mode "code").
 """

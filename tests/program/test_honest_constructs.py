@@ -259,7 +259,7 @@ def test_sets_of_program_objects_iterate_alike_in_every_worker():
 
 def test_namespace_names_the_module():
     """One function makes every program's globals; the paper protocol passes another name."""
-    from sartco.program.runtime import namespace
+    from sartco.program.child.runtime import namespace
     board = Board(8, 8)
     assert namespace(board, None)["__name__"] == "__main__"
     ns = namespace(board, None, name="scorer")

@@ -212,7 +212,7 @@ def corpus(canary):
     results, live = {}, []
     for name, code, expected, limits in HOSTILE:
         results[name] = execute(code.replace("CANARY", repr(str(canary))), limits=limits or GENEROUS)
-        live.append(len([c for c in _children() if "sartco.program.worker" in c[2]]))
+        live.append(len([c for c in _children() if "sartco.program.child.template" in c[2]]))
     after = (canary.stat().st_mtime_ns, canary.parent.stat().st_mtime_ns, sorted(os.listdir(canary.parent)))
     return results, before, after, live
 
@@ -254,6 +254,6 @@ def test_after_corpus_no_process_left_over(corpus):
     assert max(live) <= 1, "killed workers are reaped and replaced, never piled up"
     assert not [c for c in _children() if c[1] == "Z"], "no zombie children"
     shutdown()
-    assert not [c for c in _children() if "sartco.program.worker" in c[2]]
+    assert not [c for c in _children() if "sartco.program.child.template" in c[2]]
     assert execute("put(board, 'nut', 'green', 1, 1)").cells == {"1:1": [["nut", "green"]]}  # restarts
     shutdown()

@@ -1,13 +1,13 @@
 """The worker pool under batches: programs compiled ahead, runaways killed, shares balanced.
 
-A worker compiles each chunk of a batch ahead before running it (worker.py); a worker killed
+A worker compiles each chunk of a batch ahead before running it (child/template.py); a worker killed
 before it answered the first program of a chunk may have been compiling any of them, so the
 parent runs the rest again, each compiled at its own turn. These tests pin down that every
 program still gets its own exact result, in input order.
 """
 import pytest
 
-from sartco.program import Limits, driver, execute_many, pool
+from sartco.program import Limits, execute_many, handle, pool
 from sartco.world import ErrorCode
 
 RUNAWAY = "x = sum(sum(range(10**6)) for i in range(10**6))"  # a loop in C code: only a kill stops it
@@ -19,7 +19,7 @@ def _benign(i: int) -> str:
 
 @pytest.fixture
 def small_chunks(monkeypatch):
-    monkeypatch.setattr(driver, "CHUNK", 4)
+    monkeypatch.setattr(handle, "CHUNK", 4)
     pool.shutdown()
     yield
     pool.shutdown()

@@ -7,8 +7,9 @@ import time
 
 import pytest
 
-from sartco.program import Limits, execute, runtime, verdict
-from sartco.program.instrument import prepare
+from sartco.program import Limits, execute, verdict
+from sartco.program.child import runtime
+from sartco.program.check.instrument import prepare
 from sartco.program.execution import clean
 from sartco.world import ErrorCode
 

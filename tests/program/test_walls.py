@@ -1,7 +1,7 @@
 """The kernel's walls, tested as if every Python-level check had fallen (issue 32).
 
 `breached(source)` runs a source with Python's real builtins and none of the sandbox's checks
-(worker.py's mode "breach", only in a template started for these tests), inside the same walls
+(child/template.py's mode "breach", only in a template started for these tests), inside the same walls
 as every program: a fresh forked child, rlimits, the seccomp filter. The template imported
 ctypes, socket, subprocess and threading beforehand, so a program attacks the kernel, not the
 absence of a module. A program reports what it saw by raising (the message comes back) or by
@@ -13,7 +13,7 @@ import os
 import pytest
 
 from sartco.program import LocalSandbox, Limits, execute
-from sartco.program.result import FORGED
+from sartco.program.child.result import FORGED
 from sartco.world import ErrorCode
 
 E = ErrorCode
@@ -153,7 +153,7 @@ def test_what_a_program_changes_is_absent_in_the_next(box):
     child; the next program, run normally, sees none of it."""
     attack = (
         "import sys, random, functools, typing\n"
-        "import sartco.world.rules as rules, sartco.world.board as boards, sartco.program.runtime as runtime\n"
+        "import sartco.world.rules as rules, sartco.world.board as boards, sartco.program.child.runtime as runtime\n"
         "rules.check = lambda *a, **k: None\n"
         "boards.MAX_SIDE = 10 ** 6\n"
         "runtime.put = lambda *a: None\n"
@@ -189,13 +189,14 @@ def test_no_process_outlives_its_program(box):
 
 
 def test_without_seccomp_nothing_runs(monkeypatch):
-    from sartco.program import confine, driver
+    from sartco.program import handle
+    from sartco.program.child import confine
 
     def unusable():
         raise confine.Unconfinable("libseccomp is not usable (test)")
 
-    monkeypatch.setattr(driver, "_bpf", None)
-    monkeypatch.setattr(driver, "compile_filter", unusable)
+    monkeypatch.setattr(handle, "_bpf", None)
+    monkeypatch.setattr(handle, "compile_filter", unusable)
     ex = _one_put_in_a_new_sandbox()
     assert (ex.ok, ex.error, ex.cells) == (False, E.HARNESS_ERROR, {})
     assert "cannot confine programs here" in ex.message and "libseccomp" in ex.message
@@ -203,10 +204,10 @@ def test_without_seccomp_nothing_runs(monkeypatch):
 
 def test_a_filter_that_does_not_hold_is_refused(monkeypatch):
     """A filter that allows everything: the template's self-test finds a file opened."""
-    from sartco.program import driver
+    from sartco.program import handle
 
     allow_all = bytes([0x06, 0, 0, 0, 0, 0, 0xFF, 0x7F])  # BPF_RET | BPF_K, SECCOMP_RET_ALLOW
-    monkeypatch.setattr(driver, "_bpf", allow_all)
+    monkeypatch.setattr(handle, "_bpf", allow_all)
     ex = _one_put_in_a_new_sandbox()
     assert (ex.ok, ex.error) == (False, E.HARNESS_ERROR) and "could open a file" in ex.message, ex
 

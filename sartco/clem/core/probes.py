@@ -135,7 +135,7 @@ def draw_arguments(instance: dict, gold: str, name: str, k: int, seed: int = PRO
     """Up to k (arguments, gold board) pairs (module doc), the same for a seed on every run:
     rounds of CANDIDATES x k candidates until k are kept (ROUNDS at most), the first k that
     qualify in draw order. A round is one sandbox batch of gold programs (`run_many(gold=True)`:
-    one confined child for the round in the local sandbox, sartco.program.worker's mode "gold")."""
+    one confined child for the round in the local sandbox, sartco.program.child.template's mode "gold")."""
     from .sandbox import run_many
 
     rows, cols, n = instance["rows"], instance["cols"], len(combo_of(instance))

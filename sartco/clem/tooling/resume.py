@@ -7,14 +7,15 @@ a resume chooses nothing new). Resume first scores the played-but-unscored episo
 score` does), then plays exactly the missing and errored ones (and those whose interactions.json
 is unreadable, and the harness_error ones the model server gave no answer to, scored just now
 included) through clemcore's own `run` with an instance filter, into the same folder and under
-the same episode ids, and scores them; nothing else is played again or rescored. The instance
+the same episode ids, and scores them; nothing else is played again or rescored. A folder complete
+afterwards is transcribed (as `clem transcribe`: every episode's transcript.html). The instance
 file is run.json's (sartco.clem.core.runs); each episode is played with the temperature,
 max_tokens and batch size of the session that chose it (runs.settings_for), so the result
 equals an uninterrupted run's. `-t` / `-l` / `-b` only fill in what run.json does not record
 (else clem run's defaults, CLEM_DEFAULTS); one that contradicts run.json is refused.
 
 Exit status: 0 when the folder is complete afterwards (also when nothing was to do); 2 when it
-refuses (no such results folder, the instance file changed since the first run, runs of
+refuses (a model or game clem does not know, no such results folder, the instance file changed since the first run, runs of
 different instance files in one folder, a setting that contradicts run.json); 3
 (sartco.clem.tooling.completeness.INCOMPLETE_STATUS) when episodes are still not scored
 afterwards, or the model server again gave no answer to some.
@@ -33,6 +34,7 @@ from sartco.clem.core.outcomes import NO_ANSWER
 from sartco.episode import HARNESS_REASON
 from sartco.errors import UserError
 
+from .selectors import check_models, game_spec
 from .completeness import INCOMPLETE_STATUS, Unverifiable, check_game, episode_folder, needs_play
 
 
@@ -134,9 +136,12 @@ def play(args: argparse.Namespace, instance_path: Path, episodes: list[dict], te
 
 
 def run(args: argparse.Namespace) -> int:
+    check_models(args.models)
+    game_spec(args.game)
     game_dir = args.results / run_folder(args.models) / args.game
     if not game_dir.is_dir():
-        raise UserError(f"{game_dir}: no such folder (nothing was played for this game and model; use clem run)")
+        raise UserError(f"{game_dir}: no such folder (nothing was played for this game and model; play it with "
+                        f"`clem run -g {args.game} -m {' '.join(args.models)} -r {args.results}`)")
     expected, problems, run_json = _problems(game_dir)
     instance_path, _ = runs.played_instance_file(game_dir, run_json)
     # first score what was played: a harness_error among them (no answer from the model server) is played again below
@@ -170,5 +175,8 @@ def run(args: argparse.Namespace) -> int:
               f"played (harness_error; first: {still[0]['experiment']} game_id {still[0]['game_id']}); check the "
               f"server (its address: run.json's models, base_url), then run sartco resume again", flush=True)
         return INCOMPLETE_STATUS
-    print(f"sartco resume: {game_dir}: all {expected} episodes scored")
+    from clemcore.clemgame.transcripts.builder import build_transcripts
+
+    build_transcripts(str(game_dir))
+    print(f"sartco resume: {game_dir}: all {expected} episodes scored and transcribed")
     return 0

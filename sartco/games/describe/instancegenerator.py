@@ -22,6 +22,10 @@ in/instances_dialogue.json, the entry `cobot_describe_dialogue`. game_id counts 
 experiment, as in every instance file: an episode is (game, experiment, game_id), and the same
 board has the same game_id in every mode.
 
+in/instances_smoke.json holds the first --smoke episodes (2) of each experiment of in/instances.json
+(the same episodes, the same game_ids): `clem run -g cobot_describe -m MODEL -i instances_smoke`, a
+first try of the game, as cobot_instruct's smoke file.
+
 --slice N also writes in/instances_slice.json and in/instances_dialogue_slice.json with N episodes
 per experiment, spread over the split, for a smoke run with a local model:
 `clem run -g cobot_describe -m MODEL -i instances_slice`.
@@ -45,9 +49,15 @@ DIALOGUE = tuple(m for m in MODES if m != "oneshot")
 SOURCE = "describer"  # who writes the builder's instructions
 
 
+def first(items: list, n: int | None) -> list:
+    """The first n items (all when n is None)."""
+    return list(items[:n])
+
+
 def modes_file(gen: InstanceGenerator, seed: int, dataset: Path, examples: int, per_experiment: int | None,
-               questions: int, corrections: int, modes: tuple[str, ...]):
-    """The experiments of `modes` (ONESHOT or DIALOGUE), game_id counted from 0 in each."""
+               questions: int, corrections: int, modes: tuple[str, ...], pick=spread):
+    """The experiments of `modes` (ONESHOT or DIALOGUE), game_id counted from 0 in each;
+    per_experiment boards of the split, chosen by `pick` (spread over it, or the first)."""
     gen.source = dataset
     manifest, files = load_dataset(dataset)
     gen.instances["dataset"] = {"version": manifest["version"], "seed": manifest["seed"],
@@ -56,7 +66,7 @@ def modes_file(gen: InstanceGenerator, seed: int, dataset: Path, examples: int, 
     for mode in modes:
         for kind in BOARD_KINDS:  # the builder's task: the paper's for model-written instructions
             task = DESCRIBED_TASK[kind.board]
-            boards = spread(records(dataset, files, kind, "test"), per_experiment)
+            boards = pick(records(dataset, files, kind, "test"), per_experiment)
             experiment = gen.add_experiment(experiment_name(kind, task, SOURCE, None if mode == "oneshot" else mode))
             experiment.update(DescribeExperiment(board_type=kind.board, object_type=kind.object, task=task,
                                                  source=SOURCE, split="test", dataset=manifest["version"],
@@ -90,15 +100,20 @@ def write(gen: InstanceGenerator, name: str, seed: int, **kwargs) -> str:
     return written(gen, gen.generate(name, seed=seed, **kwargs))
 
 
-def _files(options: Namespace, modes: tuple[str, ...], per_experiment: int | None) -> dict:
-    """modes_file's arguments for a file of `modes` (per_experiment: a slice's N, None for all)."""
+def _files(options: Namespace, modes: tuple[str, ...], per_experiment: int | None, pick=spread) -> dict:
+    """modes_file's arguments for a file of `modes` (per_experiment: a slice's N, None for all; pick:
+    spread over the split or the first)."""
     return dict(dataset=options.dataset, examples=options.examples, per_experiment=per_experiment,
-                questions=options.questions, corrections=options.corrections, modes=modes)
+                questions=options.questions, corrections=options.corrections, modes=modes, pick=pick)
 
 
 # one function per file: (options, game folder) -> the path written
 def instances(options: Namespace, game_dir: Path) -> str:
     return write(DescribeFile(str(game_dir)), "instances.json", options.seed, **_files(options, ONESHOT, None))
+
+
+def instances_smoke(options: Namespace, game_dir: Path) -> str:
+    return write(DescribeFile(str(game_dir)), "instances_smoke.json", options.seed, **_files(options, ONESHOT, options.smoke, first))
 
 
 def instances_slice(options: Namespace, game_dir: Path) -> str:

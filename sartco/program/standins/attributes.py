@@ -70,7 +70,7 @@ def _defined(obj, name: str) -> bool:
     return any(name in klass.__dict__ for klass in mro[:-1])  # mro[-1] is object
 
 
-def _own_function(obj) -> bool:
+def own_function(obj) -> bool:
     """A function the program defined (def or lambda): its code was compiled from the program."""
     return type(obj) is types.FunctionType and obj.__code__.co_filename == FILENAME
 
@@ -126,7 +126,7 @@ def read(obj: Any, name: str) -> Any:
         raise Forbidden(f".{name} is allowed only on str, list, dict, set, tuple, the allowed modules and the "
                         f"program's own classes, not on {t.__name__}")
     if name not in allowed:
-        if name[:2] != "__" and _own_function(obj) and name in obj.__dict__:
+        if name[:2] != "__" and own_function(obj) and name in obj.__dict__:
             return obj.__dict__[name]
         _missing(t, name)
     return getattr(obj, name)
@@ -159,7 +159,7 @@ class _Fields:
 def fields(obj, name: str) -> _Fields:
     """`$fields`: the store target of the program's object `obj` for attribute `name`."""
     t = type(obj)
-    if name[:2] == "__" or not (type(t) is ProgramClass or t is ProgramClass or _own_function(obj)):
+    if name[:2] == "__" or not (type(t) is ProgramClass or t is ProgramClass or own_function(obj)):
         raise Forbidden(f"assigning to an attribute (.{name}) is allowed only on objects of the program's own "
                         f"classes and on its own functions, not on {t.__name__}")
     return _Fields(obj)

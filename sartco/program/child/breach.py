@@ -1,4 +1,4 @@
-"""The assume-breach tests' run (worker.py's mode "breach"): a source exec'd with Python's real
+"""The assume-breach tests' run (template.py's mode "breach"): a source exec'd with Python's real
 builtins and none of the sandbox's checks, as if every one had fallen, inside the same walls as
 every program (tests/program/test_walls.py). Only a template started with `--breach` runs it."""
 from __future__ import annotations
@@ -7,13 +7,13 @@ import builtins
 
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, Board, put
 
-from .execution import clean
+from ..execution import clean
 from .result import checked
 from .runtime import classify, describe, encode
 
 
 def breached(source: str, rows: int, cols: int) -> bytes:
-    """The assume-breach tests' run (worker.py mode "breach"): `source` exec'd with Python's real
+    """The assume-breach tests' run (template.py mode "breach"): `source` exec'd with Python's real
     builtins and none of the sandbox's checks, as if every one had fallen; the answer as answer()
     makes it from the global `board` or the last board made. Only the kernel's walls hold."""
     last = [Board(rows, cols)]

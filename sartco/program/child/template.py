@@ -17,7 +17,7 @@ Protocol with the parent (driver.py), lines of bytes:
 The template decides nothing about the program: the parent reads the child's answer (a put log
 of plain values and an outcome, see runtime.answer) and decides the board (verdict.py).
 
-Mode "gold" (gold.py): the harness's own gold programs of one chunk in one child.
+Mode "gold" (batch.py): the harness's own gold programs of one chunk in one child.
 
 The child, between fork and the program's first line (`_child`): its descriptors become /dev/null
 (0, 1, 2) and its answer pipe (3), every other one closed; then the rlimits, death with the
@@ -48,10 +48,10 @@ from collections.abc import Callable, Iterable
 from types import ModuleType
 from typing import TYPE_CHECKING
 
-from . import gold
+from . import batch
 
 if TYPE_CHECKING:
-    from .execution import Limits
+    from ..execution import Limits
 
 OUT_OF_MEMORY = 3  # a child's exit status after a MemoryError outside the program's own run
 FAILED = 4  # a child's exit status when its own code failed after the walls were up
@@ -82,7 +82,7 @@ def _vm_bytes() -> int:
 class Template:
     """What the children are forked from: the filter, the template's size, /dev/null."""
 
-    runtime: ModuleType  # sartco.program.runtime, imported in the template only
+    runtime: ModuleType  # sartco.program.child.runtime, imported in the template only
 
     def __init__(self, bpf: bytes, breach: bool = False):
         from . import confine, runtime
@@ -114,7 +114,7 @@ class Template:
         """A child that tries to open a file must get EPERM from the filter (not EMFILE from the
         rlimits, not a descriptor), or no program runs here."""
         from .confine import Unconfinable
-        from .execution import Limits
+        from ..execution import Limits
 
         def attempt() -> bytes:
             try:
@@ -203,7 +203,7 @@ class Template:
                             break
                         if frames:
                             stream += chunk
-                            ended, at = gold.advance(stream, at)
+                            ended, at = batch.advance(stream, at)
                             if ended:  # the next answer's time starts
                                 deadline = time.monotonic() + wall_time
                 if pidfd is not None and pidfd in ready:
@@ -240,7 +240,7 @@ class Template:
         return how, status, data[len(CONFINED):] if data.startswith(CONFINED) else b""
 
     def serve(self, inp, out) -> int:
-        from .execution import Limits
+        from ..execution import Limits
 
         runtime = self.runtime
         while True:
@@ -254,7 +254,7 @@ class Template:
             breach = mode == "breach"
             items = [inp.readline() for _ in range(request["items"])]
             if mode == "gold":
-                for how, status, answer in gold.run(self, [json.loads(item) for item in items], rows, cols, limits,
+                for how, status, answer in batch.run(self, [json.loads(item) for item in items], rows, cols, limits,
                                                     semantics):
                     out.write(b"%s %d %s\n" % (how, status, base64.b64encode(answer)))
                 out.flush()
@@ -272,11 +272,34 @@ class Template:
                 out.flush()
 
 
+ADDR_NO_RANDOMIZE = 0x0040000  # personality(2)
+
+
+def _fixed_layout() -> None:
+    """Run the template (and so its children) with the address space laid out alike in every
+    start: ASLR off for it alone (personality(2), then exec again). Python hashes functions,
+    None (3.11), NaN, exceptions, ... by their address, which then no longer differs between
+    templates of one machine and build (docs/sandbox.md says what it covers). Where the kernel
+    refuses the flag, the template runs as it is."""
+    try:
+        personality = ctypes.CDLL(None, use_errno=True).personality
+    except (OSError, AttributeError):
+        return
+    current = personality(0xFFFFFFFF)
+    if current == -1 or current & ADDR_NO_RANDOMIZE or personality(current | ADDR_NO_RANDOMIZE) == -1:
+        return
+    try:
+        os.execv(sys.executable, sys.orig_argv)
+    except OSError:  # the flag is inherited by nothing then: run on as we are
+        personality(current)
+
+
 def main(parent: int = 0, breach: bool = False) -> int:
     """The template's life: the first line of stdin is the seccomp filter (BPF, base64), then
     chunks of programs (see the module docstring)."""
     from .confine import Unconfinable
 
+    _fixed_layout()
     _die_with_parent(parent)
     inp, out = sys.stdin.buffer, sys.stdout.buffer
     try:

@@ -15,10 +15,10 @@ from __future__ import annotations
 import ast
 import builtins
 
-from .attributes import OFFERED, RECORD_NAMES, TYPES
-from .classes import EXCEPTIONS
-from .methods import METHODS
-from .modules import MEMBERS
+from ..standins.attributes import OFFERED, RECORD_NAMES, TYPES
+from ..standins.classes import EXCEPTIONS
+from ..standins.methods import METHODS
+from ..standins.modules import MEMBERS
 
 ALLOWED_BUILTINS = frozenset(
     "range zip enumerate len min max abs sum sorted reversed any all round divmod "

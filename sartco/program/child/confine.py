@@ -2,7 +2,7 @@
 
 These walls hold when every Python-level check of the sandbox has fallen (a program that reached
 the real builtins, ctypes, any syscall): what the filter does not allow fails with EPERM, and the
-rlimits stop what the program may take. The template process (worker.py) builds the filter once
+rlimits stop what the program may take. The template process (template.py) builds the filter once
 (`Filter()`, through libseccomp: the `pyseccomp` binding of the system's libseccomp.so.2); each
 forked child applies it with `Filter.apply(limits, base)` before the program's first line.
 
@@ -39,7 +39,7 @@ import tempfile
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
-    from .execution import Limits
+    from ..execution import Limits
 
 # what a program's process may call (names libseccomp knows; a name this architecture lacks is skipped)
 ALLOWED = (

@@ -14,9 +14,9 @@ import ast
 import re
 
 from .allowed import ALLOWED_BUILTINS, EXCEPTIONS, WHAT
-from .budget import Forbidden
-from .classes import FILENAME
-from .modules import MEMBERS
+from ..standins.budget import Forbidden
+from ..standins.classes import FILENAME
+from ..standins.modules import MEMBERS
 from .nodes import PLAN, WRAPS, Walk, check_name, fail
 
 __all__ = ["instrument", "prepare"]

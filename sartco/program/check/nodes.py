@@ -25,10 +25,10 @@ from __future__ import annotations
 import ast
 
 from .allowed import ATTRIBUTES, DENIED, FIELDS, PROVIDED
-from .budget import Forbidden
-from .classes import DEFINABLE, READABLE, mangle_private
-from .formatting import LONG_NUMBER, SPEC_DIGITS
-from .modules import MEMBERS, refusal
+from ..standins.budget import Forbidden
+from ..standins.classes import DEFINABLE, READABLE, mangle_private
+from ..standins.formatting import LONG_NUMBER, SPEC_DIGITS
+from ..standins.modules import MEMBERS, refusal
 
 CHECKED_OPS = {ast.Add: "$add", ast.Mult: "$mul", ast.Pow: "$pow", ast.LShift: "$lshift", ast.Mod: "$mod"}
 INPLACE_OPS = {ast.Add: "$iadd", ast.Mult: "$imul", ast.Pow: "$ipow", ast.LShift: "$ilshift", ast.Mod: "$imod"}
@@ -139,17 +139,16 @@ def _r_comprehension(n, walk):
 
 
 def _r_formatted(n, walk):
-    """A constant spec is checked here; a computed one (f'{x:>{w}}') is checked when it runs:
-    the field becomes f'{$fstr(x, conversion, spec)}'."""
+    """A constant spec is checked here, a computed one (f'{x:>{w}}') when it runs; every field
+    becomes f'{$fstr(x, conversion, spec)}' (its text relabelled: no address, conversions.py)."""
     spec = n.format_spec
     if spec is None:
-        return
+        spec = ast.copy_location(ast.Constant(""), n)
     parts = spec.values if type(spec) is ast.JoinedStr else [spec]
     if all(type(part) is ast.Constant for part in parts):
         for part in parts:
             if LONG_NUMBER.search(str(part.value)):
                 fail(n, f"f-string format widths and precisions above {'9' * SPEC_DIGITS} are not allowed")
-        return
     n.value = _call("$fstr", [n.value, _loc(ast.Constant(n.conversion), n), spec], n)
     n.conversion, n.format_spec = -1, None
 

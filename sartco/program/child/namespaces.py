@@ -32,9 +32,9 @@ import sys
 import types
 from typing import Any, NoReturn
 
-from .budget import Forbidden
-from .modules import REFUSED, load
-from .standin import Module
+from ..standins.budget import Forbidden
+from ..standins.modules import REFUSED, load
+from ..standins.standin import Module
 
 MODULE_NAME = "cocobots_scorer"
 

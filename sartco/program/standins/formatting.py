@@ -1,9 +1,10 @@
-"""Formatting within the budgets: printf-style `%`, `str.format`, `format()` and f-string fields
-whose spec is computed when they run.
+"""Formatting within the budgets: printf-style `%`, `str.format`, `format()` and f-string fields.
 
 Widths and precisions have at most SPEC_DIGITS digits, `*` widths are refused, and format
 fields may name an argument (`{0}`, `{name}`, `{}`) but never read an attribute or an item of
-it (`{0.x}`, `{0[k]}`); every result is checked against the length budget (budget.py).
+it (`{0.x}`, `{0[k]}`); every result is checked against the length budget (budget.py), and
+holds no address (conversions.relabel: each formatted value, or a `%` result with other values
+than plain str, int, float and bool).
 """
 from __future__ import annotations
 
@@ -11,9 +12,10 @@ import re
 import string
 
 from .budget import Forbidden, checked_len
-from .conversions import to_ascii, to_repr, to_str
+from .conversions import relabel, to_ascii, to_repr, to_str
 
 SPEC_DIGITS = 3  # most digits of a width or precision
+_PLAIN = frozenset({str, int, float, bool})  # values whose text holds no address
 LONG_NUMBER = re.compile(r"\d{%d,}" % (SPEC_DIGITS + 1))  # a width or precision with too many digits
 # one printf-style conversion: %[(key)][flags][width][.precision][length]type
 _PRINTF = re.compile(r"%(?:\([^)]*\))?[-#0 +]*(\*|\d+)?(?:\.(\*|\d*))?")
@@ -37,7 +39,10 @@ def mod(a, b):
                 raise Forbidden("printf-style '*' widths are not allowed; write the width in the format")
             if number and len(number) > SPEC_DIGITS:
                 _check_spec(number)
-    return checked_len(a % b)
+    values = b if type(b) is tuple else (b,)
+    if t is bytes or all(type(v) in _PLAIN for v in values):
+        return checked_len(a % b)
+    return checked_len(relabel(a % b))
 
 
 class _Formatter(string.Formatter):
@@ -49,7 +54,7 @@ class _Formatter(string.Formatter):
         return super().get_field(field_name, args, kwargs)
 
     def format_field(self, value, format_spec):
-        return format(value, _check_spec(format_spec))
+        return relabel(format(value, _check_spec(format_spec)))
 
 
 _FORMATTER = _Formatter()
@@ -63,7 +68,7 @@ def format_value(value, spec=""):
     """format(value, spec), the builtin, and f-string fields whose spec is computed."""
     if type(spec) is not str:
         raise TypeError(f"format() argument 2 must be str, not {type(spec).__name__}")
-    return checked_len(format(value, _check_spec(spec)))
+    return checked_len(relabel(format(value, _check_spec(spec))))
 
 
 def converted(value, conversion: int):
@@ -78,4 +83,7 @@ def converted(value, conversion: int):
 
 
 def fstring_field(value, conversion: int, spec: str):
+    """An f-string field (`$fstr`, every field: nodes.py)."""
+    if conversion == -1 and not spec and type(value) is str:
+        return value
     return format_value(converted(value, conversion), spec)

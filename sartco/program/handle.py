@@ -1,4 +1,4 @@
-"""The parent's side of one template process (worker.py): start it, send it chunks of programs,
+"""The parent's side of one template process (child/template.py): start it, send it chunks of programs,
 read one line per program, and turn each into an Execution (verdict.py decides the board).
 
 The template enforces each program's wall time itself (it kills the child at Limits.wall_time)
@@ -8,7 +8,7 @@ harness's failure (`harness_error`, with the reason), never a program's: no prog
 template. The rest of a batch then goes to a fresh template.
 
 Templates are started from one long-lived thread (`spawn`), so that they die with the parent
-process (worker.py), isolated as `python -I -S` would be (`-s -S -P`: no user site, no site, no
+process (child/template.py), isolated as `python -I -S` would be (`-s -S -P`: no user site, no site, no
 script or working folder on sys.path; an environment without PYTHON* variables) except for one
 variable that -I would ignore: PYTHONHASHSEED=0, so that str hashes, and with them the order of
 sets and everything built from it, are the same in every child, run and machine. BLAS libraries
@@ -32,7 +32,7 @@ from concurrent.futures import ThreadPoolExecutor
 from sartco.settings import IMPORT_ROOT
 from sartco.world import ErrorCode
 
-from .confine import Unconfinable, compile_filter
+from .child.confine import Unconfinable, compile_filter
 from .execution import MODULE, Execution, Limits
 from .verdict import decide, failed
 
@@ -47,7 +47,7 @@ HASH_SEED = "0"
 ONE_THREAD = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS")
 _BOOT = (
     "import sys; sys.path.insert(0, sys.argv[1]); "
-    "from sartco.program.worker import main; sys.exit(main(int(sys.argv[2]), '--breach' in sys.argv[3:]))"
+    "from sartco.program.child.template import main; sys.exit(main(int(sys.argv[2]), '--breach' in sys.argv[3:]))"
 )
 HOWS = (b"exit", b"signal", b"timeout", b"overflow", b"unconfined")
 
@@ -56,7 +56,7 @@ class _Dead(Exception):
     """The template process is gone or unusable."""
 
 
-class Worker:
+class TemplateHandle:
     """One template process and the thread-safe state of reading its answers."""
 
     def __init__(self, breach: bool = False):

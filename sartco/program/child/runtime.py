@@ -1,5 +1,5 @@
 """Run one prepared program on a fresh board, inside the program's own confined process (a child
-of the template, worker.py), and make the answer it sends (`answer`: a put log and an outcome).
+of the template, template.py), and make the answer it sends (`answer`: a put log and an outcome).
 
 The program's globals (namespace()) are `__name__`, `board`, `put`, `init_board`; under PAPER
 semantics namespaces.paper splits them into the authors' globals and locals. Its `__builtins__` is BUILTINS (no
@@ -21,7 +21,7 @@ stop or refusal is the verdict even when the program swallowed it (budget.STOPPE
 counter; a RecursionError or MemoryError seen by a finally body, `$final`). No internal error
 ever ends as `ok` (it is `harness_error` here, and the parent makes it the program's
 `runtime_error`: the process is the program's, verdict.py). The process runs one program and
-exits (worker.py): nothing here needs resetting for a next one.
+exits (template.py): nothing here needs resetting for a next one.
 """
 from __future__ import annotations
 
@@ -34,15 +34,16 @@ from operator import length_hint
 
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, Board, ErrorCode, WorldError, put
 
-from . import budget, conversions, formatting, namespaces
-from .allowed import ALLOWED_BUILTINS, DENIED
-from .budget import Forbidden, Limit
-from .execution import MODULE, PAPER, clean, not_a_str
-from .instrument import prepare
-from . import attributes, chance
-from .classes import SERIALS
-from .records import build_class
-from .modules import forget_typing, import_module, load
+from ..standins import budget, conversions, formatting
+from . import namespaces
+from ..check.allowed import ALLOWED_BUILTINS, DENIED
+from ..standins.budget import Forbidden, Limit
+from ..execution import MODULE, PAPER, clean, not_a_str
+from ..check.instrument import prepare
+from ..standins import attributes, chance
+from ..standins.classes import SERIALS, program_hash
+from ..standins.records import build_class
+from ..standins.modules import forget_typing, import_module, load
 from .result import checked
 
 MESSAGE_CHARS = 400
@@ -85,6 +86,7 @@ _OWN = {  # builtins of ours (with budgets); the rest of ALLOWED_BUILTINS are Py
     "range": budget.checked_range, "round": budget.checked_round, "sum": budget.checked_sum,
     "print": budget.no_print, "int": conversions.INT, "str": conversions.STR, "pow": budget.power,
     "format": formatting.format_value, "repr": conversions.to_repr, "ascii": conversions.to_ascii,
+    "hash": program_hash,
 }
 BUILTINS = {
     **{name: _Refused(name) for name in DENIED},
@@ -157,9 +159,9 @@ def describe(exc: BaseException) -> str:
         else:
             detail = str(exc)
             text = f"{type(exc).__name__}: {detail}" if detail else type(exc).__name__
-    except Exception:
+    except BaseException:  # a program's __str__ may raise anything: the message is then the name
         text = type(exc).__name__
-    text = text[:MESSAGE_CHARS]
+    text = conversions.relabel(text)[:MESSAGE_CHARS]
     return f"line {line}: {text}" if line else text
 
 
@@ -181,10 +183,11 @@ def namespace(board, init_board, name: str = "__main__") -> dict:
     """The globals of one program, a fresh module named `name` (`__main__`: a script, so
     `if __name__ == "__main__":` runs): `board`, `put`, `init_board`, `np` (numpy's stand-in, bound
     without an import as the authors' namespace bound it) and the sandbox's builtins.
-    A new program also starts the `random` stand-in and the default hashes of its objects
-    afresh (chance.py, classes.serial_hash)."""
+    A new program also starts the `random` stand-in, the default hashes of its objects and the
+    serials of addresses in its text afresh (chance.py, classes.serial_hash, conversions.relabel)."""
     chance.fresh()
     SERIALS.clear()
+    conversions.ADDRESSES.clear()
     return {"__builtins__": BUILTINS, "__name__": name, "board": board, "put": put, "init_board": init_board,
             "np": load("numpy")}
 
@@ -197,7 +200,7 @@ def run(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE, 
 
 
 def answer(source, rows: int, cols: int, limits, semantics: str = MODULE) -> bytes:
-    """What a child sends its template for one program (worker.py): ASCII JSON
+    """What a child sends its template for one program (template.py): ASCII JSON
     [ok, code or None, message, rows, cols, log], `log` the puts of the result board as one flat
     list shape, colour, x, y, shape, ... of plain str and int. The parent replays the log and
     decides the board (verdict.py): nothing else of the child's board leaves it."""

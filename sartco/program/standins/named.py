@@ -10,7 +10,7 @@ from typing import Any
 
 from .attributes import read as attribute
 from .budget import Forbidden
-from .classes import READABLE
+from .classes import READABLE, serial_hash
 
 
 def read(obj: Any, name: object) -> Any:
@@ -28,6 +28,7 @@ class attrgetter:  # operator's name
     """operator.attrgetter(*names): f(obj) -> obj.name, or a tuple for several names."""
 
     __slots__ = ("_names",)
+    __hash__ = serial_hash
 
     def __init__(self, name: str, *names: str) -> None:
         self._names = (name, *names)
@@ -48,6 +49,7 @@ class methodcaller:  # operator's name
     """operator.methodcaller(name, *args, **kwargs): f(obj) -> obj.name(*args, **kwargs)."""
 
     __slots__ = ("_name", "_args", "_kwargs")
+    __hash__ = serial_hash
 
     def __init__(self, name: str, /, *args: Any, **kwargs: Any) -> None:
         if type(name) is not str:

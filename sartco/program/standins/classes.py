@@ -21,6 +21,9 @@ from __future__ import annotations
 
 import ast
 import builtins
+import sys
+from types import BuiltinMethodType, MethodType
+from typing import Any
 
 from .budget import Forbidden
 
@@ -44,10 +47,14 @@ COMPILER_NAMES = frozenset({"__module__", "__qualname__", "__annotations__", "__
 
 
 class ProgramClass(type):
-    """The type of every class a program defines (records.build_class makes them)."""
+    """The type of every class a program defines (records.build_class makes them); a class hashes
+    by serial_hash (type's hash is its address)."""
 
     def __repr__(cls):
         return f"<class '__main__.{type.__getattribute__(cls, '__qualname__')}'>"
+
+    def __hash__(cls) -> int:
+        return serial_hash(cls)
 
 
 def is_program_object(obj) -> bool:
@@ -56,15 +63,55 @@ def is_program_object(obj) -> bool:
 
 
 SERIALS: dict[int, tuple] = {}  # id(object) -> (its hash, the object): the current program's
+WIDE = sys.hash_info.width == 64  # _tuple_hash is CPython's 64-bit one
 
 
 def serial_hash(obj) -> int:
-    """The default hash of a program's objects: the order in which they were first hashed, not
-    their address, so that sets and dicts of them iterate alike in every worker."""
+    """The default hash of a program's objects (and of the stand-ins' objects a program makes:
+    modules, generators of random, attrgetters, ...): the order in which they were first hashed,
+    not their address, so that sets and dicts of them iterate alike in every worker."""
     entry = SERIALS.get(id(obj))
     if entry is None:
         entry = SERIALS[id(obj)] = (len(SERIALS), obj)  # held: no other object takes its id
     return entry[0]
+
+
+_P1, _P2, _P5, _MASK = 11400714785074694791, 14029467366897019727, 2870177450012600261, (1 << 64) - 1
+_IDENTITY: Any = object.__hash__  # the hash of functions, classes, None (3.11), exceptions, generators, ...
+
+
+_TUPLE: Any = tuple.__hash__
+
+
+def _tuple_hash(items: tuple[Any, ...]) -> int:
+    """CPython's hash of a tuple (xxHash lanes, 64-bit), over program_hash of its items."""
+    acc = _P5
+    for item in items:
+        acc = (acc + (program_hash(item) & _MASK) * _P2) & _MASK
+        acc = (((acc << 31) | (acc >> 33)) & _MASK) * _P1 & _MASK
+    acc = (acc + (len(items) ^ (_P5 ^ 3527539))) & _MASK
+    if acc == _MASK:
+        return 1546275796
+    return acc - (1 << 64) if acc >> 63 else acc
+
+
+def program_hash(value: Any) -> int:
+    """The builtin `hash` of a program: Python's, except that what Python hashes by address (a
+    function, a class, None, NaN, an exception, a generator, a bound method, a type, and tuples
+    holding them) hashes by serial_hash, so that no hash a program sees depends on where an
+    object lies in memory."""
+    t = type(value)
+    if t.__hash__ is _IDENTITY:
+        return serial_hash(value)
+    if t is float and value != value:  # NaN: Python 3.10+ hashes each NaN by its address
+        return serial_hash(value)
+    if t is tuple or t.__hash__ is _TUPLE:  # namedtuples too
+        return _tuple_hash(value) if WIDE else hash(value)
+    if t is MethodType:  # Python: the address of __self__ ^ the hash of __func__
+        return serial_hash(value.__self__) ^ program_hash(value.__func__)
+    if t is BuiltinMethodType:  # Python: the address of __self__ ^ the address of the C function
+        return serial_hash(value.__self__) ^ hash(value.__name__)
+    return hash(value)
 
 
 def make(name: str, bases: tuple, namespace: dict):

@@ -1,4 +1,4 @@
-"""The sandbox's mode "gold" (worker.py): the harness's own gold programs of one chunk in one child.
+"""The sandbox's mode "gold" (template.py): the harness's own gold programs of one chunk in one child.
 
 It is for the harness's own reference programs alone (an instance's gold function at the
 probes' candidate arguments, sartco.clem.core.probes), never a model's: the chunk's programs run
@@ -23,7 +23,7 @@ from types import ModuleType
 from typing import TYPE_CHECKING, Callable, Iterable, Protocol
 
 if TYPE_CHECKING:
-    from .execution import Limits
+    from ..execution import Limits
 
 
 class Template(Protocol):

@@ -15,6 +15,7 @@ import random as _random
 
 from . import budget
 from .budget import too_long
+from .classes import program_hash, serial_hash
 
 RANDOM_METHODS = frozenset({"seed", "random", "randint", "randrange", "choice", "choices", "shuffle", "sample",
                             "uniform", "gauss", "normalvariate", "triangular", "expovariate", "betavariate"})
@@ -22,9 +23,15 @@ UNSEEDED = 0
 
 
 class SeededRandom(_random.Random):
-    """random.Random, seeded with UNSEEDED instead of the operating system's entropy."""
+    """random.Random, seeded with UNSEEDED instead of the operating system's entropy; named,
+    hashed and seeded by no address (a generator hashes by serial, a NaN seed by its
+    classes.program_hash, as Python seeds from a float's hash)."""
+
+    __hash__ = serial_hash
 
     def seed(self, a=None, version=2):
+        if type(a) is float and a != a:
+            a = program_hash(a) & ((1 << 64) - 1)  # what Python's C seed makes of a hash
         super().seed(UNSEEDED if a is None else a, version)
 
     def sample(self, population, k, *, counts=None):
@@ -38,6 +45,7 @@ class SeededRandom(_random.Random):
         return super().choices(population, weights, cum_weights=cum_weights, k=k)
 
 
+SeededRandom.__module__, SeededRandom.__name__, SeededRandom.__qualname__ = "random", "Random", "Random"
 SHARED = [None]  # the current program's generator, behind the module's functions (made at first use)
 
 

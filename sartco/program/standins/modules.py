@@ -17,7 +17,8 @@ caches, shared by a worker's programs, are emptied before each program (forget_t
 Stand-ins of their own: numpy (arrays.py, numpy_members.py: arrays with numpy's semantics for
 the subset models use), random (chance.py: CPython's sequence, one generator per program,
 seeded with 0 unless the program seeds it), dataclasses and namedtuple/NamedTuple (records.py:
-classes of the program), `functools.wraps(f)` (without `assigned`/`updated`), `functools.total_ordering`,
+classes of the program), `functools.wraps(f)` and `update_wrapper` (without `assigned`/`updated`;
+copying from the program's own objects only), `functools.total_ordering`,
 contextlib's `suppress` (which never swallows a budget stop, a refusal, a RecursionError or a
 MemoryError: budget.STOPS) and `nullcontext`, the only context managers a `with` can use, and
 `from __future__ import annotations`.
@@ -33,9 +34,13 @@ import math
 import operator
 import string
 import typing
+from collections.abc import Callable
+from typing import Any
 
 from . import budget, chance, formatting, named, numpy_members, records
+from .attributes import own_function
 from .budget import STOPS, Forbidden, too_big
+from .classes import ProgramClass, serial_hash
 from .conversions import INT
 from .json_module import MEMBERS as JSON_MEMBERS
 from .standin import Module
@@ -87,9 +92,37 @@ def lcm(*ints):
     return math.lcm(*ints)
 
 
-def wraps(wrapped):
-    """functools.wraps(wrapped) without `assigned`/`updated` (they name attributes to copy)."""
-    return functools.wraps(wrapped)
+def update_wrapper(wrapper: Any, wrapped: Any) -> Any:
+    """functools.update_wrapper(wrapper, wrapped) with its defaults only (no `assigned`/`updated`:
+    they name attributes to copy, `__globals__` among them), onto a function or an object of the
+    program. From the program's own functions and objects it copies what Python copies (the
+    names of functools.WRAPPER_ASSIGNMENTS, and the `__dict__` entries but dunders, which no
+    store of a program makes); from anything else (a stand-in, a type, a class of the program,
+    whose dict holds descriptors) only the names that are plain text (`__name__`, `__doc__`,
+    ...): no class dict, descriptor, type or module's globals reaches a program through it."""
+    if not (own_function(wrapper) or type(type(wrapper)) is ProgramClass):
+        raise TypeError("update_wrapper() updates a function or an object of the program")
+    own = own_function(wrapped) or type(type(wrapped)) is ProgramClass
+    for name in functools.WRAPPER_ASSIGNMENTS:
+        try:
+            value = getattr(wrapped, name)
+        except AttributeError:
+            continue
+        if own or type(value) is str or (value is None and name == "__doc__"):
+            setattr(wrapper, name, value)
+    if own:
+        attributes = getattr(wrapped, "__dict__", {})
+        wrapper.__dict__.update({k: v for k, v in attributes.items() if k[:2] != "__"})
+    wrapper.__wrapped__ = wrapped
+    return wrapper
+
+
+def wraps(wrapped: Any) -> Callable[[Any], Any]:
+    """functools.wraps(wrapped): a decorator of one argument that calls update_wrapper (Python's
+    is a partial whose keywords a caller may replace)."""
+    def decorate(wrapper: Any) -> Any:
+        return update_wrapper(wrapper, wrapped)
+    return decorate
 
 
 def total_ordering(cls):
@@ -119,6 +152,7 @@ class suppress:  # contextlib's name
     on what a program may never swallow (budget.STOPS)."""
 
     __slots__ = ("_exceptions",)
+    __hash__ = serial_hash
 
     def __init__(self, *exceptions):
         self._exceptions = exceptions
@@ -158,7 +192,7 @@ _FACTORIES = {
     "math": lambda: {**{n: getattr(math, n) for n in _MATH}, "factorial": factorial, "comb": comb,
                      "perm": perm, "prod": prod, "lcm": lcm},
     "itertools": lambda: {n: getattr(itertools, n) for n in _ITERTOOLS},
-    "functools": lambda: {"wraps": wraps, "total_ordering": total_ordering, "reduce": functools.reduce, "partial": functools.partial, "cache": functools.cache,
+    "functools": lambda: {"wraps": wraps, "update_wrapper": update_wrapper, "total_ordering": total_ordering, "reduce": functools.reduce, "partial": functools.partial, "cache": functools.cache,
                           "lru_cache": functools.lru_cache, "cmp_to_key": functools.cmp_to_key},
     "typing": lambda: {**{n: getattr(typing, n) for n in _TYPING}, "NamedTuple": records.NamedTuple},
     "collections": lambda: {"namedtuple": records.namedtuple, "defaultdict": collections.defaultdict, "Counter": collections.Counter,
