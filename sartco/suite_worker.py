@@ -39,7 +39,7 @@ def play(task: Task, results: Path) -> int:
     from clemcore.clemgame.transcripts.builder import build_transcripts
 
     from sartco.clem.core.benchmark import run_selector
-    from sartco.clem.core.provenance import RUN_FILE
+    from sartco.clem.core.runs import RUN_FILE
     from sartco.clem.tooling import resume
 
     stage = results / STAGE / str(task.index)

@@ -1,6 +1,6 @@
 """`sartco instances MODE [options]`: the games' instance files (games/<game>/in/) from a dataset,
 one mode per set of files, each file written by its own function in its game's package
-(sartco.games.instruct.instances, sartco.games.describe.instances):
+(sartco.games.instruct.instancegenerator, sartco.games.describe.instancegenerator):
 
   instruct             cobot_instruct in/instances.json, instances_ablations.json, instances_feedback.json,
                        instances_smoke.json (the committed files)
@@ -23,8 +23,9 @@ import sys
 from pathlib import Path
 
 from sartco.errors import UserError
-from sartco.games.describe import instances as describe
-from sartco.games.instruct import instances as instruct
+from sartco.games.describe import instancegenerator as describe
+from sartco.games.instruct import fresh
+from sartco.games.instruct import instancegenerator as instruct
 from sartco.settings import workspace
 
 from .legacy import parse
@@ -48,7 +49,7 @@ MODES = {
                                                               instruct.instances_published_feedback],
                            "the human- and model-written cells from the imported published data"),
     "instruct-paper": ("cobot_instruct", lambda options: [instruct.instances_paper], "the paper protocol (../shared)"),
-    "instruct-fresh": ("cobot_instruct", lambda options: [instruct.instances_fresh],
+    "instruct-fresh": ("cobot_instruct", lambda options: [fresh.instances_fresh],
                        "the published test boards beside fresh boards of FRESH_SEED"),
     "instruct-train": ("cobot_instruct", lambda options: [instruct.instances_train], "the train split, for training"),
     "instruct-describers": ("cobot_instruct", lambda options: [instruct.instances_describers],

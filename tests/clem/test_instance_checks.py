@@ -10,8 +10,9 @@ import pytest
 
 from forkserver import command
 
-from sartco.clem.core.benchmark import (EPISODE_FIELDS, InstanceFileError, RunOptions, check_instances, clem_run_options,
-                                        resume_selector, run_options)
+from sartco.clem.core.benchmark import RunOptions, clem_run_options, resume_selector, run_options
+from sartco.clem.core.errors import InstanceFileError
+from sartco.clem.core.instance_checks import EPISODE_FIELDS, check_instances
 
 REPO = Path(__file__).resolve().parents[2]
 GAME = REPO / "games" / "cobot_instruct"

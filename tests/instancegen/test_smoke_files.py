@@ -8,8 +8,8 @@ from pathlib import Path
 
 import pytest
 
-from sartco.games.describe import instances as describe
-from sartco.games.instruct import instances as instruct
+from sartco.games.describe import instancegenerator as describe
+from sartco.games.instruct import instancegenerator as instruct
 from sartco.instancegen.options import DEFAULTS
 
 REPO = Path(__file__).resolve().parents[2]

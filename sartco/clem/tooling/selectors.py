@@ -41,7 +41,9 @@ def game_spec(game: str):
 def check_instances(game: str, instances: str | None = None, experiment: str | None = None) -> None:
     """UserError when the game's instance file (clem run -i; None: the game's own) does not exist,
     is not an instance file, or has no experiment `experiment` (clem run -e)."""
-    from sartco.clem.core.benchmark import InstanceFileError, check_instances as check, instance_file
+    from sartco.clem.core.benchmark import instance_file
+    from sartco.clem.core.errors import InstanceFileError
+    from sartco.clem.core.instance_checks import check_instances as check
 
     spec = game_spec(game)
     if instances:

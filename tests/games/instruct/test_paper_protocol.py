@@ -5,43 +5,13 @@ import json
 
 import pytest
 
+from paper_helpers import PAPER_GAME as GAME
+from paper_helpers import PAPER_SETTINGS, experiment, instances
 from sartco.clem.core.transcript import display
-from sartco.games.instruct.paper import experiment_fields, instance_fields
 from sartco.clem.tooling.completeness import INCOMPLETE_STATUS
 from sartco.dataset import SHARED_DATA as DEFAULT_DATA
 
 pytestmark = pytest.mark.skipif(not (DEFAULT_DATA / "published").is_dir(), reason="shared data missing")
-
-GAME = "cobot_instruct_paper"
-PAPER_SETTINGS = {"temperature": 0.0, "max_tokens": 250}
-VARIANTS = ["multi_turn", "single_turn_sc", "single_turn", "single_turn_hai", "regular", "regular_hai"]
-
-
-@pytest.fixture(scope="module")
-def paper_episodes():
-    """The first episode of each variant kind, as PaperEpisode.to_json() dicts."""
-    from sartco.paper.episodes import build_episodes
-    eps = build_episodes(files=["sb_so_test", "sb_so_test_hc", "rb_so_test", "rb_so_test_hc"], variants=VARIANTS)
-    first = {}
-    for ep in eps:
-        first.setdefault(ep.variant, ep.to_json())
-    assert list(first) == VARIANTS
-    return first
-
-
-def instances(episodes, scripts=None):
-    out = []
-    for game_id, ep in enumerate(episodes):
-        inst = {"game_id": game_id, **instance_fields(ep)}
-        if scripts and scripts[game_id] is not None:
-            inst["script"] = scripts[game_id]
-        out.append(inst)
-    return out
-
-
-def experiment(ep, name):
-    return {"name": name, **experiment_fields(ep)}
-
 
 def scores_of(result):
     return result["scores"]["episode scores"]
@@ -162,9 +132,9 @@ def test_report_flags_a_run_with_other_generation_settings(paper_episodes, play_
 def test_the_generator_makes_one_experiment_per_cell_with_the_papers_settings():
     from pathlib import Path
 
-    from sartco.games.instruct.instances import InstructFile, paper
+    from sartco.games.instruct.instancegenerator import InstructFile, paper
 
-    GAME_DIR = Path(__file__).resolve().parents[2] / "games" / "cobot_instruct"
+    GAME_DIR = Path(__file__).resolve().parents[3] / "games" / "cobot_instruct"
     gen = InstructFile(GAME_DIR, paper)
     gen.on_generate(42, dataset_dir=GAME_DIR.parents[1] / "instances" / "v1")  # in memory: nothing written
     exps = {e["name"]: e for e in gen.instances["experiments"]}

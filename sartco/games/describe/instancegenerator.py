@@ -35,17 +35,14 @@ from __future__ import annotations
 from argparse import Namespace
 from pathlib import Path
 
-from sartco.clem.core.episodes import board_fields
-from sartco.clem.core.instance_files import records, spread, stamp, written
-from sartco.clem.core.instance_values import InstanceGenerator
+from sartco.clem.core.instance_files import InstanceGenerator, board_fields, records, spread, stamp, written
 from sartco.dataset import BOARD_KINDS, DESCRIBED_TASK, experiment_name
 from sartco.episode import DescribeEpisode, DescribeExperiment
 from sartco.instances.examples import select_examples
 from sartco.instances.prompts import builder_prompt, describer_prompt, instruction_text
 from sartco.instances.storage import load_dataset
 
-from .describer import INSTRUCTION_SLOT
-from .dialogue import MODES, clarify_note
+from .dialogue import INSTRUCTION_SLOT, MODES, clarify_note
 
 ONESHOT = ("oneshot",)
 DIALOGUE = tuple(m for m in MODES if m != "oneshot")
@@ -98,30 +95,34 @@ class DescribeFile(InstanceGenerator):
         stamp(self)
 
 
-def _write(options: Namespace, game_dir: Path, name: str, modes: tuple[str, ...], per_experiment: int | None,
-           pick=spread) -> str:
-    gen = DescribeFile(str(game_dir))
-    return written(gen, gen.generate(name, seed=options.seed, dataset=options.dataset, examples=options.examples,
-                                     per_experiment=per_experiment, questions=options.questions,
-                                     corrections=options.corrections, modes=modes, pick=pick))
+def write(gen: InstanceGenerator, name: str, seed: int, **kwargs) -> str:
+    """Write in/<name> through gen (on_generate(seed, **kwargs)), say what it holds (as cobot_instruct's)."""
+    return written(gen, gen.generate(name, seed=seed, **kwargs))
+
+
+def _files(options: Namespace, modes: tuple[str, ...], per_experiment: int | None, pick=spread) -> dict:
+    """modes_file's arguments for a file of `modes` (per_experiment: a slice's N, None for all; pick:
+    spread over the split or the first)."""
+    return dict(dataset=options.dataset, examples=options.examples, per_experiment=per_experiment,
+                questions=options.questions, corrections=options.corrections, modes=modes, pick=pick)
 
 
 # one function per file: (options, game folder) -> the path written
 def instances(options: Namespace, game_dir: Path) -> str:
-    return _write(options, game_dir, "instances.json", ONESHOT, None)
+    return write(DescribeFile(str(game_dir)), "instances.json", options.seed, **_files(options, ONESHOT, None))
 
 
 def instances_smoke(options: Namespace, game_dir: Path) -> str:
-    return _write(options, game_dir, "instances_smoke.json", ONESHOT, options.smoke, first)
+    return write(DescribeFile(str(game_dir)), "instances_smoke.json", options.seed, **_files(options, ONESHOT, options.smoke, first))
 
 
 def instances_slice(options: Namespace, game_dir: Path) -> str:
-    return _write(options, game_dir, "instances_slice.json", ONESHOT, options.slice)
+    return write(DescribeFile(str(game_dir)), "instances_slice.json", options.seed, **_files(options, ONESHOT, options.slice))
 
 
 def instances_dialogue(options: Namespace, game_dir: Path) -> str:
-    return _write(options, game_dir, "instances_dialogue.json", DIALOGUE, None)
+    return write(DescribeFile(str(game_dir)), "instances_dialogue.json", options.seed, **_files(options, DIALOGUE, None))
 
 
 def instances_dialogue_slice(options: Namespace, game_dir: Path) -> str:
-    return _write(options, game_dir, "instances_dialogue_slice.json", DIALOGUE, options.slice)
+    return write(DescribeFile(str(game_dir)), "instances_dialogue_slice.json", options.seed, **_files(options, DIALOGUE, options.slice))

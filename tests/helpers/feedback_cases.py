@@ -1,5 +1,5 @@
 """The boards and answers of the feedback (repair) tests, unit (tests/clem/test_feedback_message.py)
-and through the game loop (tests/games/test_feedback.py)."""
+and through the game loop (tests/games/instruct/test_feedback.py)."""
 import re
 
 from sartco.clem.core.building import build

@@ -14,9 +14,9 @@ import pytest
 
 from play_helpers import clem
 from sartco.cli import main as sartco_main
-from sartco.games.instruct.instances import InstructFile, described
+from sartco.games.instruct.instancegenerator import InstructFile, described
 
-REPO = Path(__file__).resolve().parents[2]
+REPO = Path(__file__).resolve().parents[3]
 SLICE = REPO / "games" / "cobot_describe" / "in" / "instances_slice.json"
 FULL = REPO / "games" / "cobot_describe" / "in" / "instances.json"
 

@@ -1,23 +1,7 @@
 """Scripted answers through the real game loop (clemcore runner, game master, sandboxed
 execution, scorer): each wrong answer ends with the right outcome and error category."""
-from play_helpers import fence, scripted_episode
-
-# target: a red washer with a blue nut on top at row 7, column 3; a yellow bridge-h at (2, 5)-(2, 6)
-TARGET = {"2:5": [["bridge-h", "yellow"]], "2:6": [["bridge-h", "yellow"]],
-          "7:3": [["washer", "red"], ["nut", "blue"]]}
-GOLD = ["put(board, 'washer', 'red', 7, 3)", "put(board, 'nut', 'blue', 7, 3)",
-        "put(board, 'bridge-h', 'yellow', 2, 5)"]
-SINGLE = {"name": "scripted_single", "board_type": "simple", "object_type": "simple", "task": "first_order",
-          "source": "template", "split": "test", "ablation": None}
-
-
-def instance(game_id, script=None, turns=1):
-    texts = (["Place a red washer at row 8, column 4, a blue nut on it, and a yellow horizontal bridge "
-              "at row 3, columns 6 and 7."] if turns == 1 else
-             ["Place a red washer at row 8, column 4.", "Place a blue nut on top of it.",
-              "Place a yellow horizontal bridge at row 3, columns 6 and 7."])
-    return scripted_episode(game_id, TARGET, GOLD, texts, script=script, single_turn=turns == 1)
-
+from episode_helpers import GOLD, SINGLE, instance, outcome
+from play_helpers import fence
 
 WRONG = {
     # name: (answer, outcome, category)
@@ -32,11 +16,6 @@ WRONG = {
     "hostile dunder escape": (fence("().__class__.__base__.__subclasses__()"), "lose", "forbidden"),
     "endless loop": (fence("while True:\n    pass"), "lose", "timeout"),
 }
-
-
-def outcome(scores):
-    s = scores["episode scores"]
-    return "aborted" if s["Aborted"] else "success" if s["Success"] else "lose"
 
 
 def test_scripted_wrong_answers(play_episodes):

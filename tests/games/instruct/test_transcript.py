@@ -6,36 +6,18 @@ import json
 import os
 import re
 import shutil
-import subprocess
 import threading
 from functools import partial
 from pathlib import Path
 
 import pytest
 
+from browser_helpers import browse, chromium
 from play_helpers import clem
 
-REPO = Path(__file__).resolve().parents[2]
+REPO = Path(__file__).resolve().parents[3]
 GAME, EXPERIMENT = "cobot_instruct_ablations", "rb_so_repetition_template_examples_0"  # 10 val episodes, loops in the gold code
 SCREENSHOT = REPO / "docs" / "transcript.png"
-
-
-def chromium() -> str:
-    found = shutil.which("chromium") or shutil.which("chromium-browser")
-    if found is None:
-        if os.environ.get("SARTCO_REQUIRE_BROWSER"):  # .ci/run installs Chromium: there it must run
-            pytest.fail("SARTCO_REQUIRE_BROWSER is set but chromium is not on PATH")
-        pytest.skip("chromium is not installed (apt-get install chromium; .ci/run does)")
-    return found
-
-
-def browse(browser: str, profile: Path, *args: str) -> subprocess.CompletedProcess:
-    flags = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
-             "--disable-component-update", "--disable-sync", "--no-first-run", "--hide-scrollbars",
-             f"--user-data-dir={profile}"]
-    done = subprocess.run([browser, *flags, *args], capture_output=True, text=True, timeout=180)
-    assert done.returncode == 0, done.stderr[-2000:]
-    return done
 
 
 # A page beside transcript.html that loads it in a frame (same origin: both from the local HTTP

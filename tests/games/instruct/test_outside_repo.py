@@ -10,7 +10,7 @@ import pytest
 
 from forkserver import command
 
-REPO = Path(__file__).resolve().parents[2]
+REPO = Path(__file__).resolve().parents[3]
 CLEM = str(Path(sys.executable).parent / "clem")
 SARTCO = str(Path(sys.executable).parent / "sartco")
 USER_MODELS = [{"model_name": "my-model", "model_id": "my-model", "backend": "openai_compatible"}]

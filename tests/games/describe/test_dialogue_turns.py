@@ -1,4 +1,4 @@
-"""cobot_describe's dialogue on its own (sartco.games.describe.dialogue, sartco.games.describe.dialogue_answers): the
+"""cobot_describe's dialogue on its own (sartco.games.describe.dialogue, sartco.games.describe.players): the
 labels of the new turns, the state machine of whose turn it is, the mock describer's corrections on every test board, the rule-based
 builder reading corrections."""
 from __future__ import annotations
@@ -8,9 +8,9 @@ import json
 import pytest
 
 from play_helpers import REPO
-from sartco.clem.core.parsing import ParseError
+from sartco.clem.core.errors import ParseError
 from sartco.games.describe.dialogue import parse_builder_answer, parse_review, settings_of
-from sartco.games.describe.dialogue_answers import correction_text
+from sartco.games.describe.players import correction_text
 from sartco.games.describe.turns import BuilderTurn, Dialogue, DialogueLog, Said, State
 from sartco.follower import emit
 from sartco.follower.correct import apply_correction, pieces

@@ -1,7 +1,7 @@
 """cobot_describe as a dialogue (clarify, correct, both) through clemcore's real loop: `clem run`,
 `clem score`, `clem transcribe` as subprocesses from the repository root, `sartco report` in
 process; scripted describers and builders for every path of the dialogue (the dialogue's units:
-tests/clem/test_dialogue_turns.py)."""
+tests/games/describe/test_dialogue_turns.py)."""
 from __future__ import annotations
 
 import copy
@@ -11,27 +11,17 @@ from pathlib import Path
 
 import pytest
 
+from episode_helpers import FULL, experiments_of, wrong_code
 from play_helpers import REPO, clem, fence
 from sartco.cli import main as sartco_main
 from sartco.games.describe.dialogue import settings_of
-from sartco.follower import emit
 from sartco.follower.correct import pieces
 from sartco.world import COLORS
 
 IN = REPO / "games" / "cobot_describe" / "in"
 SLICES = [IN / "instances_slice.json", IN / "instances_dialogue_slice.json"]  # cobot_describe, _dialogue
-FULL = [IN / "instances.json", IN / "instances_dialogue.json"]
 MODES = ("oneshot", "clarify", "correct", "clarify_correct")
 HOSTILE = "import os\nos.system('touch /tmp/sartco_dialogue_pwned')"
-
-
-def experiments_of(paths: list[Path]) -> list[dict]:
-    return [e for path in paths for e in json.loads(path.read_text())["experiments"]]
-
-
-def wrong_code(target: dict) -> str:
-    """Every piece of the target but the last one: runs, builds another board."""
-    return emit.first_order([p for _, p in pieces(target)][:-1])
 
 
 def no_colours(text: str) -> str:

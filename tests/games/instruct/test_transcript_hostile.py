@@ -8,7 +8,7 @@ import html.parser
 import pytest
 
 from play_helpers import clem, fence, play, scripted_episode
-from test_transcript import browse, chromium
+from browser_helpers import browse, chromium
 
 from sartco.games.instruct.paper import instance_fields, experiment_fields
 from sartco.dataset import SHARED_DATA

@@ -7,7 +7,7 @@
                                                   the `script` mock answers instead of gold code
 - fence(code)                                     an answer with its code in a fenced block
 - sh(*args)                                       a command that must succeed (its own process:
-                                                  tests/forkserver.py)
+                                                  tests/helpers/forkserver.py)
 - clem_process(args, cwd)                         the `clem` process in `cwd` (its own process, as
                                                   sartco.clem.tooling.benchrun.clem starts it)
 - clem(*args)                                     clemcore's CLI in this process, must succeed
@@ -27,7 +27,7 @@ from pathlib import Path
 from forkserver import command
 from sartco.episode import InstructEpisode
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 GAMES = REPO / "games"
 
 
@@ -91,7 +91,7 @@ def sh(*args, cwd=REPO, timeout=900) -> subprocess.CompletedProcess:
 
 def clem_process(args: list, cwd: Path) -> float:
     """The `clem` process of sartco.clem.tooling.benchrun.clem (the games of this checkout, the
-    registries and key.json of `cwd`), which must succeed, from tests/forkserver.py; its wall time."""
+    registries and key.json of `cwd`), which must succeed, from tests/helpers/forkserver.py; its wall time."""
     import time
 
     from sartco.clem.tooling import benchrun

@@ -4,7 +4,7 @@ test split, nothing else)."""
 import json
 from pathlib import Path
 
-REPO = Path(__file__).resolve().parents[2]
+REPO = Path(__file__).resolve().parents[3]
 GAME = REPO / "games" / "cobot_instruct"
 CELLS = ["sb_so_first_order_template", "sb_so_sequence_function_template", "sb_so_optimal_function_template",
          "rb_so_repetition_template", "rb_co_repetition_template"]

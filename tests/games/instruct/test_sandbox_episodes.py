@@ -6,7 +6,8 @@ The surrogate case: a TypeError whose message holds a lone surrogate (`put(**{'\
 made clemcore fail to write interactions.json, leaving the episode unscored."""
 import json
 
-from test_episodes import GOLD, SINGLE, fence, instance, outcome
+from episode_helpers import GOLD, SINGLE, instance, outcome
+from play_helpers import fence
 
 ATTACKS = {
     # name: (code, category)

@@ -185,7 +185,7 @@ def _recv(sock: socket.socket, n: int) -> bytes:
     while len(data) < n:
         chunk = sock.recv(n - len(data))
         if not chunk:
-            raise RuntimeError("the tests' fork server ended (tests/forkserver.py)")
+            raise RuntimeError("the tests' fork server ended (tests/helpers/forkserver.py)")
         data += chunk
     return data
 

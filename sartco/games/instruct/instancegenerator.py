@@ -28,11 +28,8 @@ name, so its results, and clem eval's clemscore, never mix with the others):
   instances_fresh.json      cobot_instruct_fresh (gitignored; sartco.games.instruct.fresh): each template
                             cell's published test boards beside as many fresh boards of a seed.
 
-Experiment names (sartco.dataset.experiment_name, the one rule of both games):
-<board>_<object>_<task>_<source>[_<variant>], board sb|rb, object so|co (BoardKind.cell), task
-first_order | sequence_function | optimal_function | repetition, source template | human |
-codellama | gpt4 | claude (or a describer model); the variants: examples_<k> or without_<section>
-(ablations), feedback, train, published or fresh<SEED>; the paper protocol's are prefixed paper_.
+Experiment names: sartco.dataset.experiment_name (variants: examples_<k>, without_<section>, feedback,
+train, published, fresh<SEED>; paper_ prefixed). Episodes: instruct_episode; InstructGenerator: the base.
 In-context examples always come from the generated dataset's train split (the published data has
 no simple-board train split). game_id counts from 0 in each experiment. Each experiment and the file
 record the dataset (dataset_info: version, source, seed, path) and this generator's seed.
@@ -44,17 +41,19 @@ from argparse import Namespace
 from pathlib import Path
 from typing import Callable
 
-from sartco.clem.core.instance_files import records, stamp, written
-from sartco.dataset import (BOARD_KINDS, DESCRIBED_TASK, REGULAR_COMPLEX, REGULAR_SIMPLE, SIMPLE, board_kind,
-                            experiment_name)
+from sartco.clem.core.instance_files import InstanceGenerator, board_fields, records, stamp, written
+from sartco.dataset import (BOARD_KINDS, DESCRIBED_TASK, REGULAR_COMPLEX, REGULAR_SIMPLE, SIMPLE, BoardKind,
+                            board_kind, experiment_name)
+from sartco.episode import InstructEpisode, InstructExperiment
 from sartco.errors import UserError
-from sartco.instances.examples import MAX_EXAMPLES
-from sartco.instances.prompts import SECTIONS
+from sartco.instances.examples import MAX_EXAMPLES, select_examples
+from sartco.instances.prompts import SECTIONS, builder_prompt, builder_turn, gold_code, instruction_text
 from sartco.instances.storage import load_dataset
 from sartco.settings import workspace
 
-from .fresh import DEFAULT_PUBLISHED, FreshInstanceGenerator
-from .instruct_generator import FEEDBACK_SUFFIX, InstructGenerator
+DEFAULT_PUBLISHED = workspace() / "instances" / "published"   # `sartco import ../shared/sartco-data/published --out ...`
+FEEDBACK = "feedback"           # the variant of the feedback experiments: <cell>_<task>_<source>_feedback
+FEEDBACK_SUFFIX = f"_{FEEDBACK}"  # and of their files: instances_feedback.json
 
 # the cells of the paper's Table 3: (board kind, task, sources from the generated data, from the published data)
 CELLS = [
@@ -64,6 +63,56 @@ CELLS = [
     (REGULAR_SIMPLE, "repetition", ["template"], ["human", "codellama", "gpt4", "claude"]),
     (REGULAR_COMPLEX, "repetition", ["template"], ["human"]),
 ]
+
+
+def instruct_episode(record: dict, task: str, source: str, examples: list[dict], sections=SECTIONS) -> InstructEpisode:
+    """One cobot_instruct game instance: the board's fields (every game's: board_fields), what the
+    builder is told (the prompt with `examples` and `sections`; multi-turn: one message per later
+    step), and what `mock` answers per turn."""
+    code = record["code"]
+    if task == "first_order":
+        steps = instruction_text(record, task, source)
+        turns = [builder_prompt(record, task, examples, sections, source, step=0)]
+        turns += [builder_turn(record, k, source) for k in range(1, len(steps))]
+        instructions, gold_turns = list(steps), list(code["first_order"]["steps"])
+    else:
+        turns = [builder_prompt(record, task, examples, sections, source)]
+        instructions = [instruction_text(record, task, source)]
+        gold_turns = [gold_code(record, task)]
+    return {**board_fields(record, task), "source": source, "turns": turns, "instructions": instructions,
+            "gold_turns": gold_turns, "examples": [ex["id"] for ex in examples]}
+
+
+class InstructGenerator(InstanceGenerator):
+    """The base of cobot_instruct's instance generators (InstructFile, and fresh.FreshInstanceGenerator):
+    one experiment per cell, with or without execution feedback, and its episodes from board
+    records, each with its in-context examples, game_id counted from 0 in each experiment."""
+
+    def __init__(self, game_dir: str, feedback_attempts: int | None = None):
+        """feedback_attempts: None for the paper's experiments; N >= 2 for the feedback experiments
+        (the Table 3 cells only, named <cell>_feedback, N attempts per episode)."""
+        super().__init__(game_dir)
+        self.feedback_attempts = feedback_attempts
+
+    def experiment(self, kind: BoardKind, task: str, source: str, split: str, dataset: dict,
+                   ablation: dict | None = None, variant: str | None = None, **extra):
+        """The experiment experiment_name(kind, task, source, variant) (with feedback: its
+        _feedback variant); extra: more experiment fields (before game_instances)."""
+        name, feedback = experiment_name(kind, task, source, variant), {}
+        if self.feedback_attempts is not None:
+            feedback = {"attempts": self.feedback_attempts, "feedback_of": name}
+            name = experiment_name(kind, task, source, variant, FEEDBACK)
+        exp = self.add_experiment(name)
+        exp.update(InstructExperiment(board_type=kind.board, object_type=kind.object, task=task, source=source,
+                                      split=split, ablation=ablation, **feedback, dataset=dataset), **extra)
+        exp.move_to_end("game_instances")
+        return exp
+
+    def add_episodes(self, exp, items, task, source, pool, seed, k, sections=SECTIONS):
+        for game_id, record in enumerate(items):
+            examples = select_examples(record, pool, k, seed) if "examples" in sections else []
+            inst = self.add_game_instance(exp, game_id)
+            inst.update(instruct_episode(record, task, source, examples, sections))
 
 
 class InstructFile(InstructGenerator):
@@ -81,8 +130,8 @@ class InstructFile(InstructGenerator):
         stamp(self)
 
 
-def write(gen: InstructGenerator, name: str, seed: int, **kwargs) -> str:
-    """Write in/<name> of the game folder (say what it holds)."""
+def write(gen: InstanceGenerator, name: str, seed: int, **kwargs) -> str:
+    """Write in/<name> through gen (on_generate(seed, **kwargs)), say what it holds (as cobot_describe's)."""
     return written(gen, gen.generate(name, seed=seed, **kwargs))
 
 
@@ -207,8 +256,7 @@ def paper(gen: InstructFile, seed: int, dataset_dir: Path, published_dir: Path |
 
 # one function per file: (options, game folder) -> the path written
 def instances(options: Namespace, game_dir: Path) -> str:
-    return write(InstructFile(game_dir, table3), "instances.json", options.seed, dataset_dir=options.dataset,
-                 n_examples=options.examples)
+    return write(InstructFile(game_dir, table3), "instances.json", options.seed, dataset_dir=options.dataset, n_examples=options.examples)
 
 
 def instances_ablations(options: Namespace, game_dir: Path) -> str:
@@ -247,11 +295,5 @@ def instances_describers(options: Namespace, game_dir: Path) -> str:
 
 
 def instances_paper(options: Namespace, game_dir: Path) -> str:
-    return write(InstructFile(game_dir, paper), "instances_paper.json", options.seed, dataset_dir=options.dataset,
-                 published_dir=options.paper_data)
+    return write(InstructFile(game_dir, paper), "instances_paper.json", options.seed, dataset_dir=options.dataset, published_dir=options.paper_data)
 
-
-def instances_fresh(options: Namespace, game_dir: Path) -> str:
-    return write(FreshInstanceGenerator(str(game_dir), CELLS), "instances_fresh.json", options.seed, dataset_dir=options.dataset,
-                 n_examples=options.examples, fresh_seed=options.fresh, published_dir=options.published,
-                 per_experiment=options.fresh_episodes or None)

@@ -1,5 +1,7 @@
-"""What the built-in players answer in cobot_describe's dialogue (answer sources,
-sartco.clem.players.sourced.AnswerSource), chosen once when the players are made:
+"""cobot_describe's players: the Describer (the player who looks at the target board and writes the
+instructions a builder then follows; a clemcore model, `human` types in the terminal; the Builder
+is sartco.clem.players.sourced's), and what the built-in players answer in the dialogue (answer
+sources, sartco.clem.players.sourced.AnswerSource), chosen once when the players are made:
 
 - DescriberMock     `mock` / `rulebased` describer: the episode's template instruction, then the
                     same text as the answer to a question, and a review of each build: "Done" or
@@ -20,13 +22,30 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from sartco.clem.players.answers import Scripted, cannot_follow
-from sartco.clem.players.sourced import ERRING, RULEBASED, AnswerSource
+from sartco.clem.players.sourced import ERRING, RULEBASED, AnswerSource, SourcedPlayer, terminal_answer
 from sartco.follower import FollowError, emit, follow
 from sartco.follower.correct import apply_correction, correction_steps, pieces
 from sartco.instances.templates import render
 
+from .dialogue import INSTRUCTION_LABEL
 from .erring_dialogue import ErringBuilder, ErringDescriber
 from .turns import DONE, BuilderTurn, Dialogue, Said, State
+
+
+# --- the Describer ----------------------------------------------------------------------------------
+class Describer(SourcedPlayer):
+    """The role that looks at the target and writes instructions (answers: what `mock` and
+    `rulebased` say, describer_answers below)."""
+
+    def __init__(self, model, answers: AnswerSource, *, name: str | None = None):
+        super().__init__(model, answers, game_role="Describer", name=name)
+
+    def _terminal_response(self, context: dict) -> str:
+        first = self.turn == 0
+        self.turn += 1
+        text = terminal_answer(context, "your instructions as Describer" if first else "your answer as Describer")
+        return text if not first or INSTRUCTION_LABEL.match(text.split("\n", 1)[0]) else f"Instruction: {text}"
+
 
 
 # --- the mock describer -----------------------------------------------------------------------------

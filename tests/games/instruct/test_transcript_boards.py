@@ -15,7 +15,8 @@ from pathlib import Path
 import pytest
 
 from play_helpers import clem, fence, play, scripted_episode
-from test_transcript import EXPERIMENT, GAME, browse, chromium
+from browser_helpers import browse, chromium
+from test_transcript import EXPERIMENT, GAME
 
 from sartco.world.render import MIN_LABEL
 
