@@ -38,6 +38,7 @@ from sartco.program import costs, pool
 from sartco.program import execute_many, shutdown
 from sartco.program.pool import default_workers
 from sartco.program.serve import serve
+from sartco.program.walls import summary, walls
 from sartco.published.files import require_data
 from sartco.published.gold import gold_programs
 
@@ -114,6 +115,7 @@ def run(args) -> int:
     print(f"{n} gold programs ({len(firsts)} distinct sources, {sum(len(p.code) for p in programs) / n:.0f} characters "
           f"on average), budgets on, {workers} template process(es) unless said otherwise; "
           f"load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} CPUs")
+    print(f"walls: {summary(walls())}")
     runs = {  # mode -> label, corpus, workers, cache
         "distinct": (f"distinct sources, {workers} template(s)", "distinct", workers, True),
         "cold": (f"cold, {workers} template(s), no cache", "all", workers, False),

@@ -1,6 +1,9 @@
 """The `sartco` command. Each subcommand lives in its own module, imported only when chosen,
 so that `sartco execute` starts fast. A module exposes `configure(parser)` and `run(args) -> int`
 (`module:x` in COMMANDS: configure_x and run_x).
+
+What every command shares is here: a user's mistake (UserError, an option argparse refuses) is one
+line and exit 2, naming the command; Ctrl-C (KeyboardInterrupt) is one line and exit 130.
 """
 from __future__ import annotations
 
@@ -14,6 +17,7 @@ from sartco.errors import UserError
 
 COMMANDS = {
     "execute": ("sartco.program.serve", "run programs from JSON lines on stdin in the sandbox"),
+    "doctor": ("sartco.doctor", "what this machine can do: the sandbox's walls, the data, models, games"),
     "bench-execute": ("sartco.bench_execute", "throughput of `sartco execute` against a bare process forking as many children"),
     "generate": ("sartco.instances.generate", "write a dataset version from a YAML config and a seed"),
     "instances": ("sartco.instancegen.command", "write the games' instance files (games/*/in/) from a dataset"),
@@ -37,8 +41,22 @@ COMMANDS = {
 }
 
 
+DESCRIPTION = ("SARTCo bench: the cobot programming games for clembench, their data, scores and tools. "
+               "When something fails, run `sartco doctor` first.")
+# what a command's --help says below its options
+EPILOGS = {
+    "execute": """input: one JSON object a line, {"id": str, "code": str, "target": optional cells}; cells are
+  {"row:col": [[shape, colour], ...]}, bottom to top.
+output: one JSON line per input, in order: {"id", "ok", "error", "message", "cells"}, and with a
+  target "es", "category", "precision", "recall", "f1".
+example:
+  echo '{"id": "a1", "code": "put(board, \\"washer\\", \\"red\\", 1, 1)", "target": {"1:1": [["washer", "red"]]}}' | sartco execute""",
+}
+INTERRUPTED = 130  # a shell's status for a process ended by Ctrl-C (128 + SIGINT)
+
+
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="sartco", description=__doc__.splitlines()[0])
+    parser = argparse.ArgumentParser(prog="sartco", description=DESCRIPTION)
     parser.add_argument("--data", metavar="DIR", default=None, dest="data_folder",
                         help="the SARTCo data folder (published/, gold_boards/, paper-protocol/); sets $SARTCO_DATA "
                              "for this command (default: $SARTCO_DATA, else ../shared/sartco-data beside the checkout)")
@@ -53,20 +71,31 @@ def main(argv: list[str] | None = None) -> int:
             return 2
         os.environ["SARTCO_DATA"] = data
     chosen = next((a for a in rest if not a.startswith("-")), None)
+    try:
+        return _run(parser, sub, argv, chosen)
+    except UserError as exc:
+        print(f"sartco {chosen}: {exc}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt as exc:
+        print(f"sartco {chosen}: interrupted (Ctrl-C){': ' + str(exc) if str(exc) else ''}", file=sys.stderr)
+        return INTERRUPTED
+
+
+def _run(parser: argparse.ArgumentParser, sub, argv: list[str], chosen: str | None) -> int:
+    """The chosen command's module imported and configured, its options read, its run."""
     modules = {}
     for name, (module, help_text) in COMMANDS.items():
-        p = sub.add_parser(name, help=help_text, description=help_text)
+        p = sub.add_parser(name, help=help_text, description=help_text, epilog=EPILOGS.get(name),
+                           formatter_class=argparse.RawDescriptionHelpFormatter)
         if name == chosen:
             module, _, suffix = module.partition(":")
             modules[name] = importlib.import_module(module), f"_{suffix}" if suffix else ""
             getattr(modules[name][0], "configure" + modules[name][1])(p)
-    args = parser.parse_args(argv)
-    try:
-        module, suffix = modules[args.command]
-        return int(getattr(module, "run" + suffix)(args) or 0)
-    except UserError as exc:
-        print(f"sartco {args.command}: {exc}", file=sys.stderr)
-        return 2
+    args, extra = parser.parse_known_args(argv)
+    if extra:  # said by the command's own parser: its usage line, not the top level's
+        sub.choices[args.command].error(f"unrecognized arguments: {' '.join(extra)}")
+    module, suffix = modules[args.command]
+    return int(getattr(module, "run" + suffix)(args) or 0)
 
 
 def _data_option(argv: list[str]) -> tuple[str | None, list[str]]:

@@ -39,7 +39,7 @@ DESCRIBER_WORDS = "Describer Words"
 DIALOGUE_SCORES = (ES_AT_1, ES_AT_N, CELL_F1_AT_1, CELL_F1_AT_N, FIRST_SUCCESS_ROUND, QUESTIONS_ASKED,
                    CORRECTIONS_SENT, DESCRIBER_WORDS)
 ROUND_PREFIX = "ES Round "
-# the describer's instruction (sartco.games.describe.describer)
+# the describer's instruction (sartco.games.describe.dialogue.log_instruction)
 DESCRIBER_ANSWERED = "Describer Answered"
 INSTRUCTION_WORDS = "Instruction Words"
 INSTRUCTION_CHARACTERS = "Instruction Characters"
@@ -71,7 +71,7 @@ MARKDOWN_KEY = "markdown"             # clemcore renders the transcript's messag
 # ---------------------------------------------------------------------------- instance records
 # An instance file: {"experiments": [Experiment, ...]}, each experiment's "game_instances" a list
 # of episodes. The fields below are what the generators write; the games' benchmarks check an
-# episode's fields against its type before `clem run` plays (sartco.clem.core.benchmark.json_fields).
+# episode's fields against its type before `clem run` plays (sartco.clem.core.instance_checks.json_fields).
 
 class PlayedEpisode(TypedDict):
     """What the game masters and BuildScorer read from every episode that ends in a build."""
@@ -88,7 +88,7 @@ class PlayedEpisode(TypedDict):
 
 
 class BuildEpisode(PlayedEpisode):
-    """An episode of one board record of a dataset (sartco.clem.core.episodes.board_fields)."""
+    """An episode of one board record of a dataset (sartco.clem.core.instance_files.board_fields)."""
     board_id: str
     board_type: str        # sartco.dataset.BOARD_TYPES
     object_type: str       # sartco.dataset.OBJECT_TYPES
@@ -106,7 +106,7 @@ class InstructEpisode(BuildEpisode):
 
 class DescribeEpisode(BuildEpisode):
     """A cobot_describe episode: the describer's prompt, the builder's prompt with a slot for the
-    instruction (sartco.games.describe.describer.INSTRUCTION_SLOT), what the mock describer writes."""
+    instruction (sartco.games.describe.dialogue.INSTRUCTION_SLOT), what the mock describer writes."""
     example_ids: list[str]  # ids of the builder prompt's in-context examples
     describer_prompt: str
     builder_prompt: str

@@ -25,7 +25,7 @@ directory. So, for the folder DIR you run `clem` in:
 
 The checkout commits the result of `sartco register .` at its top (model_registry.json,
 rulebased_api.py, openai_batching_api.py), so that `make main`, `make test` and the scripts find
-them; tests/games/test_outside_repo.py checks that registering the checkout again changes nothing.
+them; tests/games/instruct/test_outside_repo.py checks that registering the checkout again changes nothing.
 """
 from __future__ import annotations
 

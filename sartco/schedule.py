@@ -29,6 +29,7 @@ class Task:
     index: int = 0          # a play's place in the plan (its stage folder)
     instances: str | None = None  # a play's instance file (clem run's -i), None: the game's own
     group: str = ""         # plays that share work a process keeps (a worker keeps to one group)
+    batch_size: int = 1     # a play's clem run -b
 
 
 @dataclass

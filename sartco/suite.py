@@ -1,7 +1,7 @@
 """`sartco suite`: many `clem run`s and what follows them, in one command, on every core.
 
     sartco suite -r results --out scores                      # make main's job (scripts/main.sh)
-    sartco suite -r results --out scores -m my-model --only-models --no-erring
+    sartco suite -r results-mine --out scores-mine -m my-model --erring -l 512   # your own model
 
 does what these commands, one after another, would do, and writes the same files:
 
@@ -9,7 +9,8 @@ does what these commands, one after another, would do, and writes the same files
     python games/cobot_instruct/instancegenerator.py --published instances/published
     python games/cobot_instruct/instancegenerator.py --protocol paper
     python games/cobot_instruct/instancegenerator.py --fresh 7
-    clem run -g GAME -m MODEL -r RESULTS [-t 0 -l 250]      # for each (game, model) of `plan`
+    clem run -g GAME -m MODEL -r RESULTS -t T -l L -b B     # for each (game, model) of `plan`;
+                                                            # the paper protocol: -t 0 -l 250
     clem score -r RESULTS; clem transcribe -r RESULTS
     rm RESULTS/raw.csv; clem eval -r RESULTS -g GAME -m MODEL  # for each pair, in plan order
     sartco report -r RESULTS --out SCORES
@@ -27,11 +28,20 @@ What makes it faster, with the same results (scripts/compare_results.py compares
   of a board are the same programs for every answer to it);
 - the tables of `clem eval` from one pass over the score files (sartco.clem.tooling.evaluate).
 
-The terminal gets one line per task (wall and CPU seconds) and the totals; clemcore's logs and
-progress bars go to RESULTS/main.log. Refuses (exit 2) a results folder that already holds one of
-the plan's game/model folders (the runs would mix): use a new folder or remove it. Exit 1 when a
-task fails (its message and the log's path); else `sartco report`'s status (3: harness errors or
-missing episodes, named in SCORES/harness.md and completeness.md).
+The terminal gets one line per task (wall and CPU seconds; a failed task's last error line) and
+the totals, and where report.html is; clemcore's logs and progress bars go to RESULTS/main.log.
+
+Before anything is played, the models, the games and the instance file are checked (exit 2, one
+line: sartco.clem.tooling.selectors), and a results folder that holds runs already is refused
+(exit 2): a suite's tables (clem eval's results.csv beside `sartco report`'s) hold exactly its own
+runs, so a second suite goes into a folder of its own. Ctrl-C stops it (one line, exit 130) and
+keeps every episode played, in RESULTS/.suite beside the pairs already in place; the same command
+again (the plan RESULTS/.suite/plan.json must be the same) plays only what is missing: a pair in
+place is kept, a pair half played is completed by `sartco resume` in its stage folder, the rest is
+played; the results equal an uninterrupted run's (tests/cli/test_suite_own_models.py). A failed
+task leaves the same state: fix what its line names and run the command again. Exit 1 when a task
+fails (its last error line and the log's path); else `sartco report`'s status (3: harness errors
+or missing episodes, named in SCORES/harness.md and completeness.md).
 """
 from __future__ import annotations
 
@@ -50,8 +60,8 @@ from pathlib import Path
 from sartco.errors import UserError
 from sartco.clock import cpu_seconds
 from sartco.schedule import CLEM_SETTINGS, LOG, Done, Task, schedule
+from sartco.suite_worker import STAGE, run as play_or_prepare
 
-STAGE = ".suite"
 PAPER_SETTINGS = (0.0, 250)   # the paper protocol's -t and -l
 # the order in which ready plays start (the longest first), by game; the plan's order is clem eval's
 PRIORITY = ("cobot_instruct_paper", "cobot_instruct_published", "cobot_instruct_fresh", "cobot_instruct",
@@ -65,8 +75,10 @@ BOARDS = {"cobot_instruct": "generated", "cobot_instruct_feedback": "generated",
 
 
 
-def plan(models: list[str], erring: list[str], fresh_seed: int, data: str) -> list[Task]:
-    """make main's steps (scripts/main.sh's order: the plays in the order clem eval adds them)."""
+def plan(models: list[str], erring: list[str], fresh_seed: int, data: str, settings: tuple = CLEM_SETTINGS,
+         batch_size: int = 1) -> list[Task]:
+    """make main's steps (scripts/main.sh's order: the plays in the order clem eval adds them);
+    `settings` (temperature, max_tokens) for every play but the paper protocol's (PAPER_SETTINGS)."""
     tasks = [Task("import", "prepare", ("sartco", "import", f"{data}/published", "--out", "instances/published", "--quiet")),
              Task("published instances", "prepare", ("instancegen", "--published", "instances/published"), after=("import",)),
              Task("paper instances", "prepare", ("instancegen", "--protocol", "paper"), after=("import",)),
@@ -75,17 +87,17 @@ def plan(models: list[str], erring: list[str], fresh_seed: int, data: str) -> li
              "cobot_instruct_fresh": ("fresh instances",)}
     pairs: list[tuple[str, str, tuple]] = []
     for model in models:
-        pairs += [(g, model, CLEM_SETTINGS) for g in ("cobot_instruct", "cobot_instruct_published", "cobot_describe",
-                                                      "cobot_describe_dialogue")]
-    pairs += [("cobot_instruct_fresh", model, CLEM_SETTINGS) for model in models]
+        pairs += [(g, model, settings) for g in ("cobot_instruct", "cobot_instruct_published", "cobot_describe",
+                                                 "cobot_describe_dialogue")]
+    pairs += [("cobot_instruct_fresh", model, settings) for model in models]
     if models:
         first = models[0]
-        pairs += [("cobot_instruct_paper", first, PAPER_SETTINGS), ("cobot_instruct_ablations", first, CLEM_SETTINGS),
-                  ("cobot_instruct_feedback", first, CLEM_SETTINGS)]
+        pairs += [("cobot_instruct_paper", first, PAPER_SETTINGS), ("cobot_instruct_ablations", first, settings),
+                  ("cobot_instruct_feedback", first, settings)]
     for model in erring:
-        pairs += [("cobot_instruct_feedback", model, CLEM_SETTINGS), ("cobot_describe_dialogue", model, CLEM_SETTINGS)]
+        pairs += [("cobot_instruct_feedback", model, settings), ("cobot_describe_dialogue", model, settings)]
     tasks += [Task(f"{game} ({model})", "play", game=game, model=model, settings=s, after=needs.get(game, ()), index=n,
-                   group=BOARDS.get(game, game)) for n, (game, model, s) in enumerate(pairs)]
+                   group=BOARDS.get(game, game), batch_size=batch_size) for n, (game, model, s) in enumerate(pairs)]
     return tasks
 
 
@@ -102,70 +114,6 @@ def only(tasks: list[Task], games: list[str] | None) -> list[Task]:
         if t.name in keep:
             keep.update(t.after)
     return [t for t in tasks if t.name in keep]
-
-
-# ---- in a worker process -------------------------------------------------------------------------
-
-def _prepare(argv: tuple) -> int:
-    if argv[0] == "sartco":
-        from sartco import cli
-        return cli.main(list(argv[1:]))
-    from sartco.instancegen.command import script_main
-    return script_main("cobot_instruct", Path("games/cobot_instruct").resolve(), list(argv[1:]))
-
-
-def _play(task: Task, results: Path) -> int:
-    """clem run, clem score and clem transcribe of one pair, in its stage folder; then into place."""
-    from clemcore import cli as clem_cli
-    from clemcore.backends import ModelSpec
-    from clemcore.clemgame import GameBenchmark, GameRegistry
-    from clemcore.clemgame.transcripts.builder import build_transcripts
-
-    from sartco.clem.core.benchmark import run_selector
-
-    stage = results / STAGE / str(task.index)
-    temperature, max_tokens = task.settings
-    try:
-        clem_cli.run(run_selector(task.game, stage), ModelSpec.from_strings([task.model]),
-                     gen_args=dict(temperature=temperature, max_tokens=max_tokens), results_dir_path=stage,
-                     instances_filename=task.instances)
-    except SystemExit as exc:  # clemcore exits 1 after logging a game's exception; a bad instance file: 2
-        if exc.code:
-            return int(exc.code) if isinstance(exc.code, int) else 1
-    [run_dir] = [d for d in stage.iterdir() if d.is_dir()]
-    game_dir = run_dir / task.game
-    files = sorted(game_dir.rglob("interactions.json"))
-    spec = next(s for s in GameRegistry.from_directories_and_cwd_files().get_game_specs_that_unify_with(task.game)
-                if s.game_name == task.game)
-    played = cpu_seconds()
-    with GameBenchmark.load_from_spec(spec) as bench:
-        bench.compute_scores(files)
-    scored = cpu_seconds()
-    build_transcripts(str(game_dir))
-    print(f"== suite: {task.name}: CPU s of scoring {scored - played:.1f}, of transcribing {cpu_seconds() - scored:.1f}",
-          flush=True)
-    target = results / run_dir.name / task.game
-    target.parent.mkdir(parents=True, exist_ok=True)
-    os.rename(game_dir, target)
-    return 0
-
-
-def _run(task: Task, results: str) -> Done:
-    from sartco.clem.core.sandbox import restart
-
-    start, cpu = time.monotonic(), cpu_seconds()
-    print(f"== suite: {task.name}", flush=True)
-    try:
-        status = _prepare(task.argv) if task.kind == "prepare" else _play(task, Path(results))
-        message = "" if status == 0 else f"exit status {status}"
-    except BaseException as exc:  # noqa: BLE001 - the parent reports it and stops
-        traceback.print_exc()
-        status, message = 1, f"{type(exc).__name__}: {exc}"
-    finally:
-        restart()  # the sandbox's templates end, so that their CPU time counts here
-        sys.stdout.flush()
-        sys.stderr.flush()
-    return Done(task.name, status == 0, time.monotonic() - start, cpu_seconds() - cpu, message)
 
 
 # ---- in the parent -------------------------------------------------------------------------------
@@ -233,6 +181,30 @@ def _tables(results: Path, out: Path, pairs: list[tuple[str, str]]) -> int:
     return report[1] if status == 0 else 1
 
 
+PLAN = "plan.json"  # RESULTS/.suite/plan.json: the tasks of a suite that has not finished
+
+
+def _plan_text(tasks: list[Task]) -> str:
+    return json.dumps([[t.name, list(t.argv), t.game, t.model, list(t.settings), t.batch_size, t.instances, t.index]
+                       for t in tasks], indent=1)
+
+
+def _again(results: Path, tasks: list[Task]) -> bool:
+    """True when RESULTS holds an unfinished suite of these tasks (the command again: play what is
+    missing); False for a folder without runs; UserError for a folder with other runs."""
+    plan_file = results / STAGE / PLAN
+    if plan_file.is_file():
+        if plan_file.read_text() != _plan_text(tasks):
+            raise UserError(f"{results / STAGE} holds an unfinished suite with other options (its tasks: {plan_file}): "
+                            f"run that suite's command again to finish it, or give another -r")
+        return True
+    held = sorted(p for p in results.glob("*/*") if p.is_dir() and p.parent.name != STAGE)  # <model>/<game>
+    if held:
+        raise UserError(f"{held[0]} exists: a suite plays into a results folder of its own, so that every table holds "
+                        f"exactly its runs (give another -r, or remove the folder: make clean-results RESULTS={results})")
+    return False
+
+
 def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("-r", "--results", type=Path, default=Path("results"), help="the results folder (results)")
     parser.add_argument("--out", type=Path, default=Path("scores"), help="the tables' folder (scores)")
@@ -246,6 +218,12 @@ def configure(parser: argparse.ArgumentParser) -> None:
                         help="only these games of the plan (and the instance files they need); default: all")
     parser.add_argument("-i", "--instances", default=None, metavar="NAME",
                         help="the instance file every game plays (clem run's -i, e.g. instances_smoke; with -g)")
+    parser.add_argument("-t", "--temperature", type=float, default=CLEM_SETTINGS[0],
+                        help=f"clem run's -t for every play but the paper protocol's ({CLEM_SETTINGS[0]})")
+    parser.add_argument("-l", "--max_tokens", type=int, default=CLEM_SETTINGS[1],
+                        help=f"clem run's -l for every play but the paper protocol's, which keeps -l "
+                             f"{PAPER_SETTINGS[1]} ({CLEM_SETTINGS[1]}; the README recommends 512 for your own model)")
+    parser.add_argument("-b", "--batch_size", type=int, default=1, help="clem run's -b for every play (1)")
     parser.add_argument("-j", "--workers", type=int, default=os.cpu_count() or 1, help="processes (the CPUs)")
 
 
@@ -257,23 +235,31 @@ def run(args: argparse.Namespace) -> int:
     data = settings.DATA
     if data is None or not (data / "published").is_dir():
         raise UserError(f"{data}/published: no such folder (set SARTCO_DATA to the SARTCo data folder)")
-    if not Path("games/cobot_instruct").is_dir():
-        raise UserError("run it in the checkout's root folder (games/cobot_instruct not found here)")
-    tasks = only(plan(args.models, args.erring, args.fresh_seed, str(data)), args.games)
+    if args.max_tokens < 1 or args.batch_size < 1:
+        raise UserError(f"-l {args.max_tokens} -b {args.batch_size}: both must be at least 1")
+    tasks = only(plan(args.models, args.erring, args.fresh_seed, str(data), (args.temperature, args.max_tokens),
+                      args.batch_size), args.games)
     if args.instances:
         if not args.games:
             raise UserError("-i names one instance file for every game played: give the games with -g")
         tasks = [replace(t, instances=args.instances, after=()) if t.kind == "play" else t for t in tasks]
         tasks = [t for t in tasks if t.kind == "play"]
     plays = [t for t in tasks if t.kind == "play"]
+    if len(plays) < len(tasks) and not Path("games/cobot_instruct").is_dir():
+        raise UserError("run it in the checkout's root folder (games/cobot_instruct not found here; it writes "
+                        "instance files there)")
+    from sartco.clem.tooling.selectors import check_instances, check_models
+
+    check_models(dict.fromkeys(t.model for t in plays))
+    for game in dict.fromkeys(t.game for t in plays if args.instances):
+        check_instances(game, args.instances)
     results: Path = args.results
-    clash = [results / t.model / t.game for t in plays if (results / t.model / t.game).exists()]
-    if clash:
-        raise UserError(f"{clash[0]} exists: the suite plays into a results folder without the plan's runs "
-                        f"(give another -r, or remove it: make clean-results)")
-    shutil.rmtree(results / STAGE, ignore_errors=True)
+    again = _again(results, tasks)
     results.mkdir(parents=True, exist_ok=True)
-    (results / LOG).write_text("")
+    (results / STAGE).mkdir(exist_ok=True)
+    (results / STAGE / PLAN).write_text(_plan_text(tasks))
+    with open(results / LOG, "a" if again else "w") as log:
+        log.write("== suite: the same command again: what is missing\n" if again else "")
     start, cpu = time.monotonic(), cpu_seconds()
 
     def say(d: Done) -> None:
@@ -283,14 +269,25 @@ def run(args: argparse.Namespace) -> int:
             lines = re.findall(r"fresh boards \(seed[^\r\n]*", (results / LOG).read_text(errors="replace"))
             print(lines[-1] if lines else "fresh boards: the generator's line is not in the log", flush=True)
 
-    finished = schedule(_run, tasks, max(1, args.workers), results, say, PRIORITY)
+    try:
+        finished = schedule(play_or_prepare, tasks, max(1, args.workers), results, say, PRIORITY)
+    except KeyboardInterrupt:
+        raise KeyboardInterrupt(f"the episodes played are kept in {results}; the same command again plays only "
+                                f"what is missing") from None
     failed = [d for d in finished if not d.ok] or ([] if len(finished) == len(tasks) else [Done("?", False, 0, 0)])
     if failed:
-        print(f"sartco suite: {failed[0].name} failed: {failed[0].message} (full log: {results / LOG})", file=sys.stderr)
+        print(f"sartco suite: {failed[0].name} failed: {failed[0].message} (full log: {results / LOG}); fix it and "
+              f"run the same command again: it plays only what is missing", file=sys.stderr)
         return 1
     merge_run_files(results, tasks)
+    try:
+        status = _tables(results, args.out, [(t.game, t.model) for t in plays])
+    except KeyboardInterrupt:
+        raise KeyboardInterrupt("every episode is played; the same command again writes the tables") from None
     shutil.rmtree(results / STAGE)
-    status = _tables(results, args.out, [(t.game, t.model) for t in plays])
     print(f"== suite: {len(tasks)} tasks in {time.monotonic() - start:.1f} s wall, {cpu_seconds() - cpu:.1f} s CPU "
           f"on {args.workers} processes", flush=True)
+    report = args.out / "report.html"
+    if report.is_file():
+        print(f"sartco suite: the report to look at: {report.resolve()}", flush=True)
     return status

@@ -42,7 +42,8 @@ FRESH_SEED="${FRESH_SEED:-7}"
 # (the ids: $SCORES/completeness.md; `sartco resume` completes the run), or is a harness error
 # (the harness failed, not the model: $SCORES/harness.md names them)
 sartco suite -r "$RESULTS" --out "$SCORES" -m $MODELS --erring $ERRING --fresh-seed "$FRESH_SEED" \
-  || { status=$?; tail -25 "$LOG"; echo "make main: sartco suite failed (exit $status; full log: $LOG)" >&2; exit 1; }
+  || { status=$?; [ $status = 130 ] && exit 130   # Ctrl-C: the suite said what it kept; make main again goes on
+       tail -25 "$LOG"; echo "make main: sartco suite failed (exit $status; full log: $LOG)" >&2; exit 1; }
 
 printf "== results: %s/ (transcripts, results.csv, main.log), tables in %s/\n" "$RESULTS" "$SCORES"
 echo

@@ -10,7 +10,8 @@ of a game (clemcore's loop, the `mock` model), every call into the checkout's co
       build, sandbox, judge, record, the score card, `clem score`'s scorer writing scores.json.
 
 For each path it prints the files of sartco/ and games/ in the order of their first visit (how
-often the path entered each), the folders, how often the path changed folder, and the calls that
+often the path entered each), the returns (how often it entered a file it had already left: the
+visits beyond each file's first), the folders, how often the path changed folder, and the calls that
 go back up a layer: a call from a module into one of a higher layer of tests/architecture/
 test_layers.py (the layers of the checkout it runs in), e.g. a shared base calling a game's hook.
 The code run while a module is imported is left out (imports are not steps of a path).
@@ -150,7 +151,8 @@ def summary(calls: list[tuple[str, str, str | None, str | None]], package_of, ra
         if caller is not None and layer(callee) > layer(caller):
             edge = f"{caller}:{caller_function} -> {callee}:{function}"
             up[edge] = up.get(edge, 0) + 1
-    return {"files": files, "folders": folders, "folder_changes": changes, "calls_back_up": up}
+    return {"files": files, "returns": sum(n - 1 for n in files.values()), "folders": folders,
+            "folder_changes": changes, "calls_back_up": up}
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -175,7 +177,7 @@ def main(argv: list[str] | None = None) -> int:
     names = {"a": "(a) an instance from its generator to its episode", "b": "(b) an answer to scores.json"}
     for game, paths in out.items():
         for key, path in paths.items():
-            print(f"{game} {names[key]}: {len(path['files'])} files, {len(path['folders'])} folders, "
+            print(f"{game} {names[key]}: {len(path['files'])} files, {path['returns']} returns, {len(path['folders'])} folders, "
                   f"{path['folder_changes']} folder changes, {sum(path['calls_back_up'].values())} calls back up a layer")
             print("  folders: " + " > ".join(path["folders"]))
             print("  files:   " + ", ".join(f"{f}" + (f" x{n}" if n > 1 else "") for f, n in path["files"].items()))

@@ -1,8 +1,17 @@
-"""Shared by every test folder: pytest puts this folder on sys.path (rootdir conftest, no
-packages), so tests import the helpers beside it (play_helpers, paper_helpers) and share the
-fixtures below."""
+"""Shared by every test folder. The test folders are no packages (pytest puts each test file's own
+folder on sys.path); the helpers every folder uses live in tests/helpers/ (play_helpers,
+paper_helpers, forkserver, ...), which this file puts on sys.path once, before any test module is
+imported, so a test imports a helper by its bare name (`from play_helpers import play`) from any
+folder, and the helpers import each other the same way. Tests share the fixtures below."""
+
+import sys
+from pathlib import Path
 
 import pytest
+
+HELPERS = str(Path(__file__).resolve().parent / "helpers")
+if HELPERS not in sys.path:
+    sys.path.insert(0, HELPERS)
 
 
 @pytest.fixture(scope="session")
@@ -29,22 +38,22 @@ LONGEST = (
     "tests/clem/test_backend_runs.py",
     "tests/clem/test_batching.py",
     "tests/packaging/test_local_model.py",
-    "tests/games/test_end_to_end.py",
+    "tests/games/instruct/test_end_to_end.py",
     "tests/clem/test_resume_settings.py",
     "tests/program/test_poisoning.py",
     "tests/instances/test_generate.py",
     "tests/packaging/test_forkserver.py",
-    "tests/games/test_transcript_boards.py",
+    "tests/games/instruct/test_transcript_boards.py",
     "tests/clem/test_suite.py",
     "tests/protocols/test_commands.py",
     "tests/instances/test_fresh.py",
     "tests/follower/test_follower.py",
     "tests/report/test_passk.py",
     "tests/program/test_gold_conformance.py",
-    "tests/games/test_outside_repo.py",
+    "tests/games/instruct/test_outside_repo.py",
     "tests/instancegen/test_instance_command.py",
     "tests/clem/test_instance_checks.py",
-    "tests/clem/test_dialogue_turns.py",
+    "tests/games/describe/test_dialogue_turns.py",
     "tests/world/test_agreement.py",
 )
 

@@ -1,6 +1,6 @@
 """How often the sandbox builds what plain `exec` builds, on the honest-program corpus.
 
-    python tools/honest_corpus.py [--corpus tests/program/corpus] [--json OUT]
+    python tools/honest_corpus.py [--corpus tests/program/corpus] [--semantics module|paper] [--json OUT]
 
 Corpus: every `NNN_name.py` of tests/program/corpus, programs of the kinds models write for the
 task (straight puts, loops, helpers, classes, generators, numpy coordinates, seeded random, ...),
@@ -13,6 +13,11 @@ child process with a fixed string hash seed (HASH_SEED; the sandbox's workers fi
 that set iteration is reproducible. The board that counts is the global `board` if it is a Board,
 else the most recently created one (the sandbox's rule). Outcome: "ok" or the WorldError's code;
 any other exception means the program is not honest, a fault of the corpus (reported apart).
+With `--semantics paper` the oracle is the authors' scorer's `exec(code, globals, locals)`
+(namespaces.py: the scorer's globals, `board` and `instruction` as locals, `__name__` not
+"__main__"); there a Python error is an outcome too (the paper's scoping errors: a function that
+reads a top-level name is a NameError under plain exec as in the sandbox), named by the sandbox's
+error code (runtime.classify).
 
 The sandbox: sartco.program.execute_many (our protocol). A program agrees when both give the same
 outcome (ok, or the same world error code) and exactly the same cells. Prints the agreement
@@ -29,10 +34,12 @@ import json
 import os
 import subprocess
 import sys
+import types
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
-from sartco.program import execute_many
+from sartco.program import MODULE, PAPER, execute_many
+from sartco.program.execution import SEMANTICS
 
 REPO = Path(__file__).resolve().parents[1]
 CORPUS = REPO / "tests" / "program" / "corpus"
@@ -54,11 +61,16 @@ def known(corpus: Path = CORPUS) -> dict[str, str]:
 
 # --- the oracle: plain exec (runs in a child process, see oracle()) -------------------------------
 
-def _plain_exec(source: str) -> list:
+def _plain_exec(source: str, semantics: str = MODULE) -> list:
     """[outcome, cells] of plain exec under the authors' namespace (outcome "ok", a world error
-    code, or "not honest: ..." for any other exception)."""
+    code, or "not honest: ..." for any other exception; under PAPER that exception's code)."""
+    import collections
+    import copy
+
     import numpy  # the real one, as the authors' scorer module had it
 
+    from sartco.program.child import namespaces
+    from sartco.program.child.runtime import classify
     from sartco.world import Board, WorldError, put
 
     last = [Board(8, 8)]
@@ -67,23 +79,33 @@ def _plain_exec(source: str) -> list:
         last[0] = Board(rows, cols)
         return last[0]
 
-    env = {"__name__": "__main__", "board": last[0], "put": put, "init_board": init_board, "np": numpy}
+    passed = last[0]
+    env = {"__name__": "__main__", "board": passed, "put": put, "init_board": init_board, "np": numpy}
+    if semantics == MODULE:  # the program is the script: `__main__` (dataclasses reads string annotations there)
+        sys.modules["__main__"] = script = types.SimpleNamespace()  # type: ignore[assignment]
+        script.__dict__.update(env)
+        env = script.__dict__
+    scope = env
+    if semantics == PAPER:  # the authors' exec(code) inside a function of their scorer module
+        env = {"__name__": namespaces.MODULE_NAME, "put": put, "init_board": init_board, "np": numpy,
+               "json": json, "re": __import__("re"), "Counter": collections.Counter, "deepcopy": copy.deepcopy}
+        scope = {"instruction": source, "board": passed}
     try:
         with contextlib.redirect_stdout(io.StringIO()):
-            exec(compile(source, "<honest>", "exec"), env)
+            exec(compile(source, "<honest>", "exec", dont_inherit=True), env, scope)
         outcome = OK
     except WorldError as exc:
         outcome = exc.code.value
-    except Exception as exc:  # the corpus's own fault, reported as such
-        outcome = f"not honest: plain exec raised {type(exc).__name__}: {exc}"
-    result = env.get("board")
+    except Exception as exc:  # the corpus's own fault, reported as such (a paper scoping error is not)
+        outcome = classify(exc).value if semantics == PAPER else f"not honest: plain exec raised {type(exc).__name__}: {exc}"
+    result = passed if semantics == PAPER else env.get("board")  # PAPER: the board passed in is scored
     return [outcome, (result if type(result) is Board else last[0]).cells()]
 
 
-def oracle(sources: list[str], hash_seed: str = HASH_SEED) -> list[list]:
+def oracle(sources: list[str], hash_seed: str = HASH_SEED, semantics: str = MODULE) -> list[list]:
     """[outcome, cells] per program, from one child process with PYTHONHASHSEED=hash_seed."""
     env = {**os.environ, "PYTHONHASHSEED": hash_seed}
-    child = subprocess.run([sys.executable, __file__, "--oracle"], input=json.dumps(sources), env=env,
+    child = subprocess.run([sys.executable, __file__, "--oracle", "--semantics", semantics], input=json.dumps(sources), env=env,
                            capture_output=True, text=True, check=False)
     if child.returncode:
         raise RuntimeError(f"the oracle process failed: {child.stderr.strip()[-2000:]}")
@@ -113,11 +135,11 @@ def _differences(plain: dict, sandbox: dict, most: int = 3) -> str:
     return shown + (f"; and {len(keys) - most} more cells" if len(keys) > most else "")
 
 
-def run(programs: list[tuple[str, str]]) -> list[Result]:
+def run(programs: list[tuple[str, str]], semantics: str = MODULE) -> list[Result]:
     """Each program through the oracle and the sandbox, compared."""
     sources = [source for _, source in programs]
-    expected = oracle(sources)
-    got = execute_many(sources)
+    expected = oracle(sources, semantics=semantics)
+    got = execute_many(sources, semantics=semantics)
     results = []
     for (name, _), (plain, cells), ex in zip(programs, expected, got):
         sandbox = OK if ex.ok else f"{ex.error.value}: {ex.message}"
@@ -155,12 +177,13 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--oracle", action="store_true", help=argparse.SUPPRESS)  # the child's side
     parser.add_argument("--corpus", type=Path, default=CORPUS)
+    parser.add_argument("--semantics", choices=SEMANTICS, default=MODULE)
     parser.add_argument("--json", type=Path, help="also write every result as JSON")
     args = parser.parse_args(argv)
     if args.oracle:
-        json.dump([_plain_exec(source) for source in json.load(sys.stdin)], sys.stdout)
+        json.dump([_plain_exec(source, args.semantics) for source in json.load(sys.stdin)], sys.stdout)
         return 0
-    results = run(load(args.corpus))
+    results = run(load(args.corpus), args.semantics)
     print(report(results, known(args.corpus)))
     if args.json:
         args.json.write_text(json.dumps([asdict(r) for r in results], indent=1), encoding="utf-8")

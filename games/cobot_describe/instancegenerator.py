@@ -1,5 +1,5 @@
 """cobot_describe's instance files: `sartco instances describe` with the flags this script always
-took (sartco.games.describe.instances: the experiments and modes, one function per file).
+took (sartco.games.describe.instancegenerator: the experiments and modes, one function per file).
 
     python games/cobot_describe/instancegenerator.py [--dataset instances/v1] [--seed 42]
            [--examples 5] [--questions 2] [--corrections 3] [--slice N]

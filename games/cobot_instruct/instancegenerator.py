@@ -1,5 +1,5 @@
 """cobot_instruct's instance files: `sartco instances instruct...` with the flags this script always
-took (sartco.games.instruct.instances: one function per file; sartco.instancegen: the modes;
+took (sartco.games.instruct.instancegenerator: one function per file; sartco.instancegen: the modes;
 sartco.instancegen.legacy: the flags).
 
     python games/cobot_instruct/instancegenerator.py     # in/instances.json, instances_ablations.json,

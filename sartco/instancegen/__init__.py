@@ -1,7 +1,7 @@
 """The instance files of both games, written by one command (`sartco instances MODE`, and the game
 scripts games/*/instancegenerator.py with their old flags): sartco.instancegen.command (modes and
 options), .options (defaults and bounds), .legacy (the scripts' flags). Each game's files are its own
-package's (sartco.games.instruct.instances, sartco.games.describe.instances: one function per
+package's (sartco.games.instruct.instancegenerator, sartco.games.describe.instancegenerator: one function per
 instance file), over what both share (sartco.clem.core.instance_files: the generator class,
 writing, the dataset's records).
 

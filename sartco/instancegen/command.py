@@ -1,6 +1,6 @@
 """`sartco instances MODE [options]`: the games' instance files (games/<game>/in/) from a dataset,
 one mode per set of files, each file written by its own function in its game's package
-(sartco.games.instruct.instances, sartco.games.describe.instances):
+(sartco.games.instruct.instancegenerator, sartco.games.describe.instancegenerator):
 
   instruct             cobot_instruct in/instances.json, instances_ablations.json, instances_feedback.json,
                        instances_smoke.json (the committed files)
@@ -9,8 +9,8 @@ one mode per set of files, each file written by its own function in its game's p
   instruct-fresh FRESH_SEED  in/instances_fresh.json: published beside fresh boards of FRESH_SEED
   instruct-train       in/instances_train.json, the train split
   instruct-describers DIR  in/instances_describers.json, from `sartco import-instructions`
-  describe             cobot_describe in/instances.json, instances_dialogue.json (and --slice N: their
-                       _slice files, the committed ones use --slice 2)
+  describe             cobot_describe in/instances.json, instances_smoke.json, instances_dialogue.json
+                       (and --slice N: the _slice files, the committed ones use --slice 2)
 
 The game scripts (games/*/instancegenerator.py) are the same command with the flags they always had
 (script_main; sartco.instancegen.legacy). A wrong value is a UserError: one line naming the option
@@ -23,8 +23,9 @@ import sys
 from pathlib import Path
 
 from sartco.errors import UserError
-from sartco.games.describe import instances as describe
-from sartco.games.instruct import instances as instruct
+from sartco.games.describe import instancegenerator as describe
+from sartco.games.instruct import fresh
+from sartco.games.instruct import instancegenerator as instruct
 from sartco.settings import workspace
 
 from .legacy import parse
@@ -35,7 +36,7 @@ GAMES = workspace() / "games"
 
 def _describe_files(options: argparse.Namespace) -> list:
     slices = options.slice is not None
-    return [describe.instances, *[describe.instances_slice] * slices,
+    return [describe.instances, describe.instances_smoke, *[describe.instances_slice] * slices,
             describe.instances_dialogue, *[describe.instances_dialogue_slice] * slices]
 
 
@@ -48,7 +49,7 @@ MODES = {
                                                               instruct.instances_published_feedback],
                            "the human- and model-written cells from the imported published data"),
     "instruct-paper": ("cobot_instruct", lambda options: [instruct.instances_paper], "the paper protocol (../shared)"),
-    "instruct-fresh": ("cobot_instruct", lambda options: [instruct.instances_fresh],
+    "instruct-fresh": ("cobot_instruct", lambda options: [fresh.instances_fresh],
                        "the published test boards beside fresh boards of FRESH_SEED"),
     "instruct-train": ("cobot_instruct", lambda options: [instruct.instances_train], "the train split, for training"),
     "instruct-describers": ("cobot_instruct", lambda options: [instruct.instances_describers],
@@ -82,7 +83,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
                                    ("instruct-paper", "paper_data", False), ("instruct-fresh", "fresh", True),
                                    ("instruct-fresh", "fresh_episodes", False),
                                    ("instruct-train", "train_episodes", False), ("instruct-describers", "describers", True),
-                                   ("describe", "questions", False), ("describe", "corrections", False),
+                                   ("describe", "smoke", False), ("describe", "questions", False), ("describe", "corrections", False),
                                    ("describe", "slice", False)]:
         add_option(modes[mode], name, positional=positional)
 

@@ -45,7 +45,7 @@ def _instruct_parser() -> argparse.ArgumentParser:
 
 def _describe_parser() -> argparse.ArgumentParser:
     parser = _parser("Instances of cobot_describe from a generated dataset's test split (= sartco instances describe).")
-    for name in ("questions", "corrections", "slice"):
+    for name in ("smoke", "questions", "corrections", "slice"):
         add_option(parser, name)
     return parser
 

@@ -29,7 +29,7 @@ OPTIONS: dict[str, tuple[type, str | None, str]] = {
     "seed": (int, None, "seed of the in-context example choice"),
     "examples": (int, None, f"in-context examples per prompt (0..{MAX_EXAMPLES}, default {DEFAULTS['examples']})"),
     "ablation_episodes": (int, None, "val boards per ablation experiment"),
-    "smoke": (int, None, "episodes per cell in instances_smoke.json"),
+    "smoke": (int, None, "episodes per experiment in instances_smoke.json (the first of each)"),
     "attempts": (int, None, "attempts per episode in the feedback experiments (at least 2)"),
     "published": (Path, None, "imported published dataset (default instances/published)"),
     "paper_data": (Path, None, "the published SARTCo files (default ../shared/sartco-data/published)"),

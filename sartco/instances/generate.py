@@ -22,6 +22,7 @@ from collections import defaultdict
 from pathlib import Path
 from typing import Any, Callable
 
+from sartco.errors import UserError
 from sartco.dataset import BOARD_KINDS, RECORD_KEYS, SIMPLE, SPLITS, BoardKind, BoardRecord
 
 from .arrangements import anchors
@@ -192,6 +193,8 @@ def configure(parser) -> None:
 
 
 def run(args) -> int:
+    if args.seed < 0:  # random.Random(-1) is Random(1): a negative seed would write another seed's data
+        raise UserError(f"--seed must be 0 or more, not {args.seed}")
     config = load_config(args.config)
     start = time.perf_counter()
     counts = write_dataset(config, args.seed, args.out)

@@ -18,6 +18,7 @@ from .compare import Comparison, compare, judge
 from .execution import MODULE, PAPER, Execution, Limits
 from .pool import LocalSandbox, shutdown
 from .sandbox import Sandbox, current, execute, execute_many, use
+from .walls import Wall, walls
 
 __all__ = ["execute", "execute_many", "shutdown", "compare", "judge", "Execution", "Comparison", "Limits",
-           "MODULE", "PAPER", "Sandbox", "LocalSandbox", "current", "use"]
+           "MODULE", "PAPER", "Sandbox", "LocalSandbox", "current", "use", "Wall", "walls"]

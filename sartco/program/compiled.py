@@ -29,7 +29,7 @@ import sys
 import threading
 import time
 
-from .execution import MODULE, PAPER, Execution, Limits
+from .execution import Execution, Limits
 
 # frames between a compile and the recursion limit in a template's child before issue 46
 # (runtime._depth() == 10 where the child called compile_program, under the default limit 1000)
@@ -61,11 +61,11 @@ def _at_headroom(source: str, limits: Limits, thread: bool = False) -> tuple:
     return out[0]
 
 
-def prepare(source: str, rows: int, cols: int, limits: Limits, semantics: str = MODULE) -> bytes | Execution:
-    """The template's item for one program (a line: base64 of the marshalled (code, source), the
-    source only under the paper protocol, where the program sees its own text; code None: compile
-    it in the child; child/runtime.answer_item reads it), or the Execution of a program that never
-    runs (refused, or a compile longer than the wall time)."""
+def prepare(source: str, limits: Limits) -> bytes | Execution:
+    """The template's item for one program (a line: base64 of the marshalled (code, source); the
+    paper protocol's program sees its own text; code None: compile it in the child;
+    child/runtime.answer_item reads it), or the Execution of a program that never runs (refused,
+    or a compile longer than the wall time)."""
     from .child.runtime import encode
     from .verdict import decide
 
@@ -77,7 +77,7 @@ def prepare(source: str, rows: int, cols: int, limits: Limits, semantics: str = 
         return decide(b"exit", 0, encode(False, error, message, None), limits.wall_time)
     if _frozensets(code):  # compiled in the child, as before (see the module docstring)
         return base64.b64encode(marshal.dumps((None, source)))
-    return base64.b64encode(marshal.dumps((code, source if semantics == PAPER else "")))
+    return base64.b64encode(marshal.dumps((code, source)))
 
 
 def _frozensets(code) -> bool:

@@ -118,7 +118,7 @@ def breakdown(sources: list[str], rounds: int = 3, core: int = 0) -> dict[str, f
     import base64
 
     limits = Limits()
-    items = [compiled.prepare(s, 8, 8, limits) for s in sources]
+    items = [compiled.prepare(s, limits) for s in sources]
     keep = [k for k, item in enumerate(items) if type(item) is bytes]  # the programs that run
     sources = [sources[k] for k in keep]
     job = base64.b64encode(compile_filter()) + b"\n" + b"".join(
@@ -141,7 +141,7 @@ def breakdown(sources: list[str], rounds: int = 3, core: int = 0) -> dict[str, f
                 answers = [base64.b64decode(a) for a in out[:-1]]
         cpu = time.process_time()
         for s in sources:
-            compiled.prepare(s, 8, 8, limits)
+            compiled.prepare(s, limits)
         seen["parent: compile"].append((time.process_time() - cpu) / len(sources) * 1e3)
         cpu = time.process_time()
         for answer in answers:

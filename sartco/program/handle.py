@@ -9,10 +9,13 @@ template. The rest of a batch then goes to a fresh template.
 
 Templates are started from one long-lived thread (`spawn`), so that they die with the parent
 process (child/template.py), isolated as `python -I -S` would be (`-s -S -P`: no user site, no site, no
-script or working folder on sys.path; an environment without PYTHON* variables) except for one
-variable that -I would ignore: PYTHONHASHSEED=0, so that str hashes, and with them the order of
-sets and everything built from it, are the same in every child, run and machine. BLAS libraries
-are told to use one thread (a forked child has no other thread, and may start none).
+script or working folder on sys.path), in `/`, with ENVIRONMENT as their whole environment:
+nothing of the user's (no API key, token or path) is inherited. PYTHONHASHSEED=0 (which -I
+would ignore) makes str hashes, and with them the order of sets and everything built from it,
+the same in every child, run and machine; PYTHONUTF8=1 and LC_CTYPE=C.UTF-8 fix the encoding
+(else Python would pick one from the locale). The template's argv holds the interpreter, the
+import root (sys.path), the parent's pid and the mode; then it enters its namespaces
+(confine.py; NAMESPACES) and reports them on its ready line (walls.py shows them).
 """
 from __future__ import annotations
 
@@ -28,10 +31,12 @@ import threading
 import time
 from collections import deque
 from concurrent.futures import ThreadPoolExecutor
+from typing import Any
 
 from sartco.settings import IMPORT_ROOT
 from sartco.world import ErrorCode
 
+from . import compiled
 from .child.confine import Unconfinable, compile_filter
 from .execution import MODULE, Execution, Limits
 from .verdict import decide, failed
@@ -44,10 +49,13 @@ READ_SIZE = 1 << 16  # bytes per read (a read allocates its whole size first)
 _ROOT = str(IMPORT_ROOT)
 ISOLATED = ("-s", "-S", "-P")  # -I without -E (see the module docstring)
 HASH_SEED = "0"
-ONE_THREAD = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS")
+# the template's whole environment: nothing of the user's (no key, token or path) is inherited
+ENVIRONMENT = {"PYTHONHASHSEED": HASH_SEED, "PYTHONUTF8": "1", "LC_CTYPE": "C.UTF-8"}
+NAMESPACES = True  # templates enter their namespaces (the tests turn it off to test seccomp alone)
 _BOOT = (
     "import sys; sys.path.insert(0, sys.argv[1]); "
-    "from sartco.program.child.template import main; sys.exit(main(int(sys.argv[2]), '--breach' in sys.argv[3:]))"
+    "from sartco.program.child.template import main; "
+    "sys.exit(main(int(sys.argv[2]), '--breach' in sys.argv[3:], '--no-namespaces' not in sys.argv[3:]))"
 )
 HOWS = (b"exit", b"signal", b"timeout", b"overflow", b"unconfined")
 SHARED = ("gold", "answer")  # modes whose chunk runs in one child (child/batch.py)
@@ -67,14 +75,17 @@ class TemplateHandle:
         self.lock = threading.Lock()
         self.room = 4096  # bytes the template's stdin pipe holds
         self.breach = breach
+        self.pid: int | None = None  # the template's pid (pid 1 of its namespace, whose parent is proc)
+        self.walls: list[Any] = []  # [name, up, why] of each namespace, as the template reported them
 
     # -- process ---------------------------------------------------------------------------
-    def start(self):
+    def start(self) -> None:
         try:
             bpf = _filter()
         except Unconfinable as exc:
             raise _Dead(f"the sandbox cannot confine programs here: {exc}") from None
-        argv = [sys.executable, *ISOLATED, "-c", _BOOT, _ROOT, str(os.getpid())] + (["--breach"] if self.breach else [])
+        argv = [sys.executable, *ISOLATED, "-c", _BOOT, _ROOT, str(os.getpid())] + (["--breach"] if self.breach else []) \
+            + ([] if NAMESPACES else ["--no-namespaces"])
         self.proc = spawn(argv)
         self.proc.stdin.write(base64.b64encode(bpf) + b"\n")
         self.proc.stdin.flush()
@@ -90,14 +101,18 @@ class TemplateHandle:
         self.lines.clear()
         self.tail = b""
         first = self._readline(time.monotonic() + START_TIMEOUT)
-        if first != b'"ready"':
+        ready, _, report = (first or b"").partition(b" ")
+        if ready != b'"ready"':
             self.kill()
             if first is not None and first.startswith(b"unconfined: "):
                 raise _Dead("the sandbox cannot confine programs here: " + first[12:].decode("ascii", "replace"))
             raise _Dead("the sandbox worker did not start")
+        report = json.loads(report) if report else {}
+        self.pid, self.walls = report.get("pid", self.proc.pid), report.get("walls", [])
+        _say_once(self.walls)
 
     def kill(self) -> int | None:
-        proc, self.proc = self.proc, None
+        proc, self.proc, self.pid = self.proc, None, None
         if proc is None:
             return None
         try:
@@ -142,12 +157,14 @@ class TemplateHandle:
             pass  # the template died or was killed: the reader finds out and reports it
 
     def run(self, items: list[bytes], rows: int, cols: int, limits: Limits, semantics: str = MODULE,
-            mode: str = "code", starts: frozenset[int] = frozenset()) -> list[Execution]:
-        """One Execution per item (a program as compiled.prepare made it), in order. In the modes
+            mode: str = "code", judge: bool = True, starts: frozenset[int] = frozenset()) -> list[Execution]:
+        """One Execution per item (a program as compiled.prepare made it), in order. With `judge`, a
+        template that dies or falls silent while it runs an item is judged (`_judged`). In the modes
         whose chunk shares a child (SHARED), a chunk starts at each index of `starts` too (one
         answer's programs), and its first answer may take the whole chunk's wall time, twice."""
         results: list[Execution] = []
         while len(results) < len(items):
+            suspect, late = None, False
             todo = items[len(results):]
             rest = frozenset(k - len(results) for k in starts if k > len(results))
             patience = limits.wall_time * (2 * max(map(len, _chunks(todo, rest))) if mode in SHARED else 1) + SLACK
@@ -168,7 +185,7 @@ class TemplateHandle:
             for _ in todo:
                 try:
                     line = self._readline(time.monotonic() + patience)
-                    fault = None if line is not None else "the sandbox worker did not answer in time"
+                    fault, late = (None, False) if line is not None else ("the sandbox worker did not answer in time", True)
                 except (_Dead, OSError):
                     line, fault = None, f"the sandbox worker ended unexpectedly (status {self.kill()})"
                 if line is not None:
@@ -179,11 +196,35 @@ class TemplateHandle:
                     results[-1] = failed(ErrorCode.HARNESS_ERROR, f"garbled answer from the sandbox worker: {line[:60]!r}")
                 else:
                     results.append(failed(ErrorCode.HARNESS_ERROR, fault))
+                    suspect = len(results) - 1
                 self.kill()  # the template failed: the rest goes to a fresh one
                 break
             if writer is not None:
                 writer.join()  # done, or unblocked by the kill (a closed pipe)
+            if suspect is not None and judge:
+                results[suspect] = self._judged(items[suspect], results[suspect], late, rows, cols, limits, semantics, mode)
         return results
+
+    def _judged(self, item: bytes, fault: Execution, late: bool, rows: int, cols: int, limits: Limits, semantics: str,
+                mode: str) -> Execution:
+        """The template died (or fell silent: `late`) while it ran `item`, whose verdict so far is
+        the harness_error `fault`. Whose failure was it? The evidence: the item runs again alone in
+        a fresh template, and that answer is its verdict. If that template fails too, a program that
+        does nothing runs in another: answered, the program brought its templates down itself (its
+        `runtime_error`, or `timeout` when they fell silent); not answered, templates fail whatever
+        runs here, and the fault is the harness's."""
+        again = self.run([item], rows, cols, limits, semantics, mode, judge=False)[0]
+        if again.error is not ErrorCode.HARNESS_ERROR:
+            return again
+        empty = compiled.prepare("", limits)  # what fails whatever runs fails on too
+        control = self.run([empty], rows, cols, limits, semantics, "code", judge=False)[0] if type(empty) is bytes else fault
+        if control.error is ErrorCode.HARNESS_ERROR:
+            return fault
+        if late:
+            return failed(ErrorCode.TIMEOUT, f"the program's sandbox template stopped answering while it ran, twice "
+                                             f"(an empty program's did not): it ran longer than {limits.wall_time:g} s")
+        return failed(ErrorCode.RUNTIME_ERROR, "the program brought down the sandbox template that ran it, twice "
+                                               "(an empty program did not)")
 
 
 def _chunks(items: list[bytes], starts: frozenset[int]) -> list[list[bytes]]:
@@ -206,6 +247,19 @@ def _answer(line: bytes, limits: Limits) -> Execution | None:
     except (binascii.Error, ValueError):
         return None
     return decide(parts[0], int(parts[1]), answer, limits.wall_time)
+
+
+_said = False
+
+
+def _say_once(walls: list[Any]) -> None:
+    """Once per process: the namespaces the kernel refused (programs still run, behind layer 1)."""
+    global _said
+    down = [(name, why) for name, up, why in walls if not up]
+    if NAMESPACES and down and not _said:
+        _said = True
+        print(f"sartco: {', '.join(name for name, _ in down)} namespace(s) down ({down[0][1]}); programs run "
+              f"behind seccomp and rlimits", file=sys.stderr)
 
 
 _bpf: bytes | None = None
@@ -238,8 +292,5 @@ def spawn(argv: list[str]) -> subprocess.Popen:
 
 
 def _environment() -> dict[str, str]:
-    """The parent's environment without PYTHON* variables, the fixed hash seed, one BLAS thread."""
-    env = {k: v for k, v in os.environ.items() if not k.startswith("PYTHON")}
-    env["PYTHONHASHSEED"] = HASH_SEED
-    env.update(dict.fromkeys(ONE_THREAD, "1"))
-    return env
+    """ENVIRONMENT, and nothing of the parent's."""
+    return dict(ENVIRONMENT)

@@ -85,7 +85,7 @@ class LocalSandbox:
     def pids(self) -> list[int]:
         """The process ids of this sandbox's running templates."""
         with self._lock:
-            return [t.proc.pid for t in self._templates if t.proc is not None]
+            return [t.pid for t in self._templates if t.pid is not None]
 
     def close(self) -> None:
         """Kill and reap every template of this process (they restart on the next call) and forget
@@ -119,7 +119,7 @@ class LocalSandbox:
         def drive(template: TemplateHandle, share: list[int], start: set[int]):
             with template.lock:
                 answers = template.run([items[i] for i in share], rows, cols, limits, semantics, mode,
-                                       frozenset(start) if groups is not None else frozenset())
+                                       starts=frozenset(start) if groups is not None else frozenset())
                 for i, answer in zip(share, answers):
                     results[i] = answer
 
@@ -173,7 +173,7 @@ class LocalSandbox:
                     todo.append(i)
             # compiled here (compiled.py); a program that never runs has its Execution already
             made = {i: json.dumps(programs[i]).encode() if mode == "breach" else
-                    compiled.prepare(programs[i], rows, cols, limits, semantics) for i in todo}
+                    compiled.prepare(programs[i], limits) for i in todo}
             run = [i for i in todo if type(made[i]) is bytes]
             items = [made[i] for i in run]
             groups = None if mode != ANSWER or answers is None else [answers[i] for i in run]

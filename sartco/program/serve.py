@@ -42,6 +42,9 @@ def run(args) -> int:
             raise UserError(f"--{name} must be between 1 and {MAX_SIDE}, got {getattr(args, name)}")
     if args.batch < 1 or (args.workers is not None and args.workers < 1) or args.wall_time <= 0:
         raise UserError("--batch and --workers must be at least 1, --wall-time positive")
+    from .walls import summary, walls
+
+    print(f"walls: {summary(walls())}", file=sys.stderr, flush=True)
     serve(sys.stdin.buffer, sys.stdout.buffer, args.rows, args.cols,
           Limits(wall_time=args.wall_time), workers=args.workers, batch=args.batch)
     return 0

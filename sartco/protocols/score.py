@@ -13,7 +13,7 @@ import json
 import sys
 from pathlib import Path
 
-from sartco.clem.core.outcomes import HarnessFault
+from sartco.clem.core.errors import HarnessFault
 from sartco.games.instruct.paper import check_turns
 from sartco.errors import UserError
 from sartco.paper.vocabulary import PROTOCOL, published_test_files

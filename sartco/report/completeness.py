@@ -1,5 +1,5 @@
 """Is a results folder complete? Every (model, game, experiment) of a results folder against the
-episodes of the instance file it was played from (sartco.clem.core.provenance.played_instance_file:
+episodes of the instance file it was played from (sartco.clem.core.runs.played_instance_file:
 run.json's, else the game entry's default file).
 
 What counts as missing, errored, unscored or unreadable: sartco.clem.tooling.completeness.
@@ -15,7 +15,8 @@ from collections import Counter
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from sartco.clem.core.provenance import ProvenanceError, selecting
+from sartco.clem.core.errors import ProvenanceError
+from sartco.clem.core.runs import selecting
 from sartco.clem.tooling.completeness import INCOMPLETE_STATUS, PROBLEMS, Unverifiable, check_game
 from sartco.errors import UserError
 

@@ -21,6 +21,7 @@ from sartco.episode import BUILD_KEY
 
 from . import charts, dialogue_table
 from .charts import esc
+from .rows import TASK_NAMES
 from .completeness import INCOMPLETE_MARK, RUN_HEADER, Completeness, run_row
 
 NAME = "report.html"
@@ -81,7 +82,7 @@ def cells_table(rows: list[dict]) -> str:
     out = ["<table class='cells'><tr>" + "".join(f"<th>{esc(k.replace('_', ' '))}</th>" for k in keys)
            + "".join(f"<th>{esc(m)}</th>" for m in models) + "</tr>"]
     for key, by_model in cells.items():
-        line = "".join(f"<td>{esc(v)}</td>" for v in key)
+        line = "".join(f"<td>{esc(TASK_NAMES.get(v, v) if k == 'task' else v)}</td>" for k, v in zip(keys, key))
         for m in models:
             r = by_model.get(m)
             if r is None:

@@ -49,6 +49,10 @@ class EpisodeRow(TypedDict):  # (no `from __future__ import annotations`: NotReq
     player_models: dict | None  # scores.json's player_models
     experiment_counts: NotRequired[tuple | None]   # added by sartco.report.completeness
 
+# how the tables and report.html name a task
+TASK_NAMES = {"first_order": "first-order (multi-turn)", "sequence_function": "function from puts",
+              "optimal_function": "optimal function", "repetition": "repetition"}
+
 
 def model_of(episode_dir: Path) -> str:
     """The model pair an episode was played by (see the module doc)."""

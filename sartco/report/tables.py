@@ -34,15 +34,13 @@ from sartco.dataset import SOURCES as SOURCE_ORDER, TASKS as TASK_ORDER
 from . import (completeness, contamination, dialogue_table, harness_table, html, html_tables, intervals, paper_table,
                passk, robustness)
 from .files import markdown_table, percent, replace_stale, write_csv
-from .rows import collect
+from .rows import TASK_NAMES, collect
 
 # clemgame entries whose cells are rows of another game's Table 3 (the published human- and
 # model-written instructions beside the template ones, as in the paper); every other game name
 # (cobot_instruct_ablations, _feedback, ...) is reported under its own name
 TABLE3_GAME = {"cobot_instruct_published": "cobot_instruct"}
 
-TASK_NAMES = {"first_order": "first-order (multi-turn)", "sequence_function": "function from puts",
-              "optimal_function": "optimal function", "repetition": "repetition"}
 
 
 def configure(parser: argparse.ArgumentParser) -> None:

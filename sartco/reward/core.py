@@ -19,7 +19,8 @@ from clemcore.clemgame.master import Outcome
 
 from sartco.clem.core.building import BuildRecord, build_answers_many, parse_failure, sandbox_fault
 from sartco.clem.core.harness import fault_reason
-from sartco.clem.core.outcomes import HarnessFault, outcome_for
+from sartco.clem.core.errors import HarnessFault
+from sartco.clem.core.outcomes import outcome_for
 from sartco.clem.core.probes import GoldDraws, gold_draws, probed, run_probes_many
 from sartco.clem.core.scoring import build_scores, probe_scores
 from sartco.errors import UserError

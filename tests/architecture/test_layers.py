@@ -40,7 +40,7 @@ LAYERS = [
     ("protocols", ["sartco.protocols"]),
     # rewards for RL trainers over our protocol's episodes (ids of sartco.protocols)
     ("reward", ["sartco.reward"]),
-    ("top", ["sartco.report", "sartco.instancegen", "sartco.cli", "sartco.__main__", "sartco.bench_execute", "sartco.suite", "sartco.schedule", "games", "tools"]),
+    ("top", ["sartco.report", "sartco.instancegen", "sartco.cli", "sartco.__main__", "sartco.bench_execute", "sartco.suite", "sartco.suite_worker", "sartco.schedule", "sartco.doctor", "games", "tools"]),
 ]
 TOP = len(LAYERS) - 1  # the entry points may use each other (the `sartco` command dispatches to them)
 RANK = {package: rank for rank, (_, packages) in enumerate(LAYERS) for package in packages}

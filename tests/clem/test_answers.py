@@ -1,9 +1,9 @@
-"""The built-in players' answer sources (sartco.clem.players.answers, sartco.games.describe.dialogue_answers): what
+"""The built-in players' answer sources (sartco.clem.players.answers, sartco.games.describe.players): what
 each answers turn by turn, and which one a player gets for a model name."""
 import pytest
 
 from play_helpers import REPO, scripted_episode
-from sartco.games.describe.dialogue_answers import DescriberMock, DialogueFollower, builder_answers, describer_answers
+from sartco.games.describe.players import DescriberMock, DialogueFollower, builder_answers, describer_answers
 from sartco.games.describe.turns import Dialogue, DialogueLog
 from sartco.clem.players.answers import NO_CODE, GoldCode, InstructFollower, Scripted, instruct_answers
 from sartco.clem.players.sourced import RULEBASED, fenced

@@ -120,7 +120,7 @@ def test_answer_table_covers_every_turn():
 
 @pytest.mark.slow
 def test_bench_run_batched_scores_equal_sequential(tmp_path, monkeypatch):
-    # its clem processes forked from the tests' warm parent (tests/forkserver.py), as the other runs here
+    # its clem processes forked from the tests' warm parent (tests/helpers/forkserver.py), as the other runs here
     monkeypatch.setattr(benchrun, "clem", clem_process)
     # multi-turn (first-order, 2-5 requests per episode) and single-turn episodes
     result = benchrun.bench(["sb_so_first_order_template", "rb_co_repetition_template"], episodes=5, latency=0.05,

@@ -10,8 +10,9 @@ import pytest
 
 from forkserver import command
 
-from sartco.clem.core.benchmark import (EPISODE_FIELDS, InstanceFileError, RunOptions, check_instances, clem_run_options,
-                                        resume_selector, run_options)
+from sartco.clem.core.benchmark import RunOptions, clem_run_options, resume_selector, run_options
+from sartco.clem.core.errors import InstanceFileError
+from sartco.clem.core.instance_checks import EPISODE_FIELDS, check_instances
 
 REPO = Path(__file__).resolve().parents[2]
 GAME = REPO / "games" / "cobot_instruct"
@@ -89,7 +90,7 @@ def benchmark_of(game: str):
 
 @pytest.mark.parametrize("game, committed", [
     ("cobot_instruct", {"instances": 650, "instances_ablations": 850, "instances_feedback": 650, "instances_smoke": 10}),
-    ("cobot_describe", {"instances": 390, "instances_slice": 6, "instances_dialogue": 1170,
+    ("cobot_describe", {"instances": 390, "instances_smoke": 6, "instances_slice": 6, "instances_dialogue": 1170,
                         "instances_dialogue_slice": 18}),
 ])
 def test_every_instance_file_passes(game, committed):

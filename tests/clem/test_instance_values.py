@@ -1,5 +1,5 @@
 """Instance files are checked for their values, not just their fields, before any model is asked
-(sartco.clem.core.instance_values through sartco.clem.core.benchmark.check_instances): each bad value is one
+(sartco.clem.core.instance_checks.check_instances): each bad value is one
 line naming the file, the episode and the value, and `clem run` exits 2 without playing. A
 generator whose input is missing says so and never replaces an instance file with an empty one."""
 import importlib.util
@@ -12,7 +12,8 @@ import pytest
 
 from forkserver import command
 
-from sartco.clem.core.benchmark import EPISODE_FIELDS, InstanceFileError, check_instances
+from sartco.clem.core.errors import InstanceFileError
+from sartco.clem.core.instance_checks import EPISODE_FIELDS, check_instances
 
 REPO = Path(__file__).resolve().parents[2]
 GAME = REPO / "games" / "cobot_instruct"

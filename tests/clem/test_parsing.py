@@ -1,7 +1,8 @@
 """parse_code on answers as models really write them."""
 import pytest
 
-from sartco.clem.core.parsing import ParseError, parse_code
+from sartco.clem.core.errors import ParseError
+from sartco.clem.core.parsing import parse_code
 from sartco.world import ErrorCode
 
 PUT = "put(board, 'washer', 'red', 7, 3)"

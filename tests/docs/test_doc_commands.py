@@ -18,12 +18,17 @@ The rule (README, "The docs"):
   server, an API key or a wheel install, or the output of a command that is not run. Every LONG
   entry must still be a command of some doc.
 A command that fails here either breaks the docs or belongs in LONG, with its reason.
+- A block that plays the README's own model (`-m my-model`) runs against a stub server that answers
+  with the gold code (own_model): the README's key.json and model registry entry are written as
+  shown, with the stub's address; the registry is restored before the comparison.
 
 Relative links of the same files must reach a file, and a `#fragment` a heading of that file.
 """
 from __future__ import annotations
 
+import contextlib
 import hashlib
+import json
 import os
 import re
 import shutil
@@ -35,6 +40,7 @@ from pathlib import Path
 import pytest
 
 from sartco import settings
+from sartco.clem.tooling.stub_server import StubServer, answer_table
 
 REPO = Path(__file__).resolve().parents[2]
 DOCS = [REPO / "README.md", *sorted((REPO / "docs").glob("*.md"))]
@@ -44,9 +50,8 @@ TIMEOUT = 180
 
 LONG = {
     "make install": "creates .venv and installs the project with pip: minutes",
-    "clem run -g cobot_instruct -m my-model -i instances_smoke -l 512":
-        "needs your model's server (tests/clem/test_backend_runs.py plays this path against a stub server)",
-    "clem run -g cobot_instruct -m my-model -l 512": "needs your model's server; 650 episodes",
+    "sartco suite -r results-mine --out scores-mine -m my-model --erring -g cobot_instruct -l 512":
+        "needs your model's server; 650 episodes (its smoke run above is played against a stub server here)",
     "clem run -g cobot_instruct_paper -m <model> -t 0 -l 250": "needs your model; 1,950 episodes",
     "clem score; sartco report -r results": "scores the paper protocol's run above, which is not run here",
     # docs/models.md, "Installed anywhere": the same steps in a wheel install, 5-7 min
@@ -140,6 +145,21 @@ def digest(path: Path) -> str:
     return hashlib.sha256(path.read_bytes()).hexdigest()
 
 
+OWN_MODEL = "-m my-model"
+
+
+def own_model(copy: Path, base_url: str) -> None:
+    """The README's key.json and model registry entry in the copy, the server at `base_url`."""
+    blocks = [json.loads("\n".join(line for _, line in body))
+              for _, tag, body in fences((REPO / "README.md").read_text(encoding="utf-8")) if tag == "json"]
+    key = next(b for b in blocks if isinstance(b, dict) and "openai_compatible" in b)
+    entries = next(b for b in blocks if isinstance(b, list) and b[0].get("model_name") == "my-model")
+    key["openai_compatible"]["base_url"] = base_url
+    (copy / "key.json").write_text(json.dumps(key))
+    registry = json.loads((copy / "model_registry.json").read_text())
+    (copy / "model_registry.json").write_text(json.dumps(registry + entries))
+
+
 @pytest.mark.slow  # clem runs end to end: tests/conftest.py starts this file early
 @pytest.mark.parametrize("where, block", [b for b in BLOCKS if any(c not in LONG for _, c in b[1])],
                          ids=[w for w, b in BLOCKS if any(c not in LONG for _, c in b)])
@@ -155,7 +175,22 @@ def test_documented_commands_run(tmp_path, where, block):
     env = {k: v for k, v in os.environ.items() if k not in ("CLEMBENCH_HOME", "SARTCO_DATA", "SARTCO_RESOURCES")}
     env["PATH"] = f"{Path(sys.executable).parent}{os.pathsep}{env.get('PATH', '')}"
     env["PYTHONPATH"] = str(copy)
-    cwd, marker, took = copy, tmp_path / "cwd", []
+    marker, took = tmp_path / "cwd", []
+    with contextlib.ExitStack() as stack:
+        if any(OWN_MODEL in c and c not in LONG for _, c in block):
+            smoke = json.loads((REPO / "games" / "cobot_instruct" / "in" / "instances_smoke.json").read_text())
+            server = stack.enter_context(StubServer(answer_table(
+                [i for e in smoke["experiments"] for i in e["game_instances"]]), latency=0.0))
+            own_model(copy, server.base_url)
+        run_block(where, block, copy, env, marker, took)
+    shutil.copy2(REPO / "model_registry.json", copy / "model_registry.json")
+    changed = [name for name in files if not (copy / name).is_file() or digest(copy / name) != digest(REPO / name)]
+    assert not changed, f"{where}: the commands changed or removed files of the checkout:\n" + "\n".join(changed)
+    print("\n".join(took))
+
+
+def run_block(where: str, block, cwd: Path, env: dict, marker: Path, took: list) -> None:
+    """Each command of the block in order (a `cd` carries over); must exit 0 within TIMEOUT."""
     for line, command in block:
         if command in LONG:
             continue
@@ -172,9 +207,6 @@ def test_documented_commands_run(tmp_path, where, block):
             f"{where}, line {line}: `{command}` exited {done.returncode}; fix the doc, or add it to LONG in "
             f"tests/docs/test_doc_commands.py with a reason\n{done.stdout[-1500:]}\n{done.stderr[-1500:]}")
         cwd = Path(marker.read_text().strip())
-    changed = [name for name in files if not (copy / name).is_file() or digest(copy / name) != digest(REPO / name)]
-    assert not changed, f"{where}: the commands changed or removed files of the checkout:\n" + "\n".join(changed)
-    print("\n".join(took))
 
 
 def slug(heading: str) -> str:

@@ -18,9 +18,10 @@ from sartco.report import tables
 from sartco.report.harness_table import HARNESS_STATUS
 
 from play_helpers import GAMES
-from test_episodes import GOLD, SINGLE, fence, instance, outcome
-from test_paper_protocol import VARIANTS, paper_episodes  # noqa: F401 - paper_episodes is a fixture
-from test_paper_protocol import experiment as paper_experiment, instances as paper_instances
+from episode_helpers import GOLD, SINGLE, instance, outcome
+from play_helpers import fence
+from paper_helpers import VARIANTS
+from paper_helpers import experiment as paper_experiment, instances as paper_instances
 
 FEEDBACK = dict(SINGLE, name="harness_feedback", attempts=3)
 
@@ -153,7 +154,7 @@ def test_cobot_describe_records_a_model_server_without_answer(play_episodes, mon
     _harness(result, "model server: InternalServerError after 2 tries")
 
 
-def test_the_paper_protocol_records_a_harness_fault(paper_episodes, play_episodes, monkeypatch, fresh_pool):  # noqa: F811 - the imported fixture
+def test_the_paper_protocol_records_a_harness_fault(paper_episodes, play_episodes, monkeypatch, fresh_pool):
     ep = paper_episodes[VARIANTS[0]]
     no_worker(monkeypatch, "no worker for the paper protocol")
     result, = play_episodes(paper_instances([ep]), paper_experiment(ep, "harness_paper"),

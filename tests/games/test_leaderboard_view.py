@@ -27,9 +27,9 @@ import pytest
 from play_helpers import clem, fence
 from sartco.cli import main as sartco_main
 from sartco.world.render import MIN_LABEL
-from test_cobot_describe_dialogue import FULL, experiments_of, wrong_code
+from browser_helpers import browse, chromium
+from episode_helpers import FULL, experiments_of, wrong_code
 from test_score_card import assert_card_matches, read_scores
-from test_transcript import browse, chromium
 
 GAME = "cobot_describe_dialogue"
 MODELS = ("mock", "rulebased")

@@ -18,7 +18,7 @@ from sartco.report import charts
 from sartco.report.files import MANIFEST
 
 from report_helpers import write_results
-from test_transcript import browse, chromium
+from browser_helpers import browse, chromium
 
 HOSTILE = "B<b>&x"   # a model name (a folder name) with markup: shown as text, never as markup
 

@@ -18,10 +18,9 @@ import pytest
 
 from feedback_cases import GOLD, TARGET, WRONG
 from play_helpers import clem, fence, play, scripted_episode
-from test_cobot_describe_dialogue import FULL, experiments_of, wrong_code
-from test_paper_protocol import GAME as PAPER_GAME
-from test_paper_protocol import VARIANTS, experiment, instances, paper_episodes  # noqa: F401 - a fixture
-from test_transcript import browse, chromium
+from browser_helpers import browse, chromium
+from episode_helpers import FULL, experiments_of, wrong_code
+from paper_helpers import PAPER_GAME, experiment, instances
 from sartco.world import category_meaning
 
 INSTRUCT = {"name": "card_instruct", "board_type": "simple", "object_type": "simple", "task": "first_order",
@@ -139,7 +138,7 @@ def read_scores(path: Path) -> dict:
 
 
 @pytest.fixture(scope="module")
-def played(tmp_path_factory, paper_episodes):  # noqa: F811 - the imported fixture
+def played(tmp_path_factory, paper_episodes):
     """Each game played in-process, its scores.json removed, transcribed, then `clem score`d."""
     from clemcore.clemgame.transcripts.builder import build_transcripts
 

@@ -154,7 +154,7 @@ def test_a_fresh_run_on_a_dataset_without_config_or_train_split_says_which_and_e
 
 COMMITTED = [("cobot_instruct", name) for name in ("instances", "instances_ablations", "instances_feedback",
                                                    "instances_smoke")] + \
-            [("cobot_describe", name) for name in ("instances", "instances_slice", "instances_dialogue",
+            [("cobot_describe", name) for name in ("instances", "instances_smoke", "instances_slice", "instances_dialogue",
                                                    "instances_dialogue_slice")]
 
 

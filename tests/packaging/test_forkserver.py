@@ -1,4 +1,4 @@
-"""The tests' command processes (tests/forkserver.py): a command forked from the warm server
+"""The tests' command processes (tests/helpers/forkserver.py): a command forked from the warm server
 says, writes and exits as the same command in a fresh interpreter does."""
 import os
 import re

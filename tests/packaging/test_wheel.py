@@ -7,7 +7,7 @@ The venv holds the wheel and exactly the distributions its requirements resolve 
 this interpreter's environment (`installed`): `pip check` there proves every declared requirement
 met, the commands prove nothing undeclared is needed. Slow: building the wheel (about 10 s), then
 each command in the venv imports clemcore anew (about 1 s, forked from a warm parent:
-tests/forkserver.py)."""
+tests/helpers/forkserver.py)."""
 from __future__ import annotations
 
 import email.parser
@@ -31,7 +31,7 @@ REPO = Path(__file__).resolve().parents[2]
 
 def run(*args, cwd: Path, env: dict, timeout: int = 900) -> subprocess.CompletedProcess:
     """The command as a process of its own; the venv's Python programs are forked from a server
-    that the venv's python started (tests/forkserver.py), which imports nothing of the checkout."""
+    that the venv's python started (tests/helpers/forkserver.py), which imports nothing of the checkout."""
     done = command(args, cwd=cwd, env=env, timeout=timeout)
     assert done.returncode == 0, f"{' '.join(map(str, args))} failed:\n{done.stdout[-2000:]}\n{done.stderr[-3000:]}"
     return done

@@ -1,6 +1,6 @@
 """The paper protocol runs a program as the authors' scorer did (paper-protocol README, "How the
 authors ran a program"): one test per rule, each program run in the sandbox with PAPER semantics
-and by the plain-exec model of the authors' scorer (tests/authors_scorer.py); verdict and board
+and by the plain-exec model of the authors' scorer (tests/helpers/authors_scorer.py); verdict and board
 must agree, and each rule's programs give the verdict the README states. Our protocol (MODULE)
 keeps a script's semantics for the same programs."""
 import numpy

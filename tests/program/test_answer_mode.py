@@ -54,7 +54,7 @@ def test_two_templates_never_split_an_answer(monkeypatch):
     finally:
         box.close()
     assert all(ex.ok for ex in results)
-    answer_of = {compiled.prepare(p, 8, 8, Limits()): i // 8 for i, p in enumerate(programs)}
+    answer_of = {compiled.prepare(p, Limits()): i // 8 for i, p in enumerate(programs)}
     assert sorted(sorted(answer_of[item] for item in chunk) for chunk in sent) == [[k] * 8 for k in range(10)]
 
 

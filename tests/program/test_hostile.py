@@ -104,7 +104,8 @@ HOSTILE = [
     ("async", "async def f():\n    pass", F, None),
     ("del", "del put", F, None),
     ("raise", "raise SystemExit", F, None),
-    ("match", "match 1:\n    case 1:\n        pass", F, None),
+    ("match reading a dunder", "match 1:\n    case int(__class__=c):\n        pass", F, None),
+    ("match reading an unchecked method", "match 'a':\n    case str(ljust=f):\n        f(10 ** 8)", F, None),
     ("decorator", "@getattr\ndef g():\n    pass", F, None),
     # imports: only the stand-ins, and nothing behind them
     ("import os.path", "import os.path", F, None),

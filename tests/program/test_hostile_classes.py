@@ -25,7 +25,7 @@ HOSTILE = {
     "__index__": ("class I:\n    def __index__(self):\n        return 0\nput(board, 'washer', 'red', I(), 0)", F),
     "__class_getitem__": ("class A:\n    def __class_getitem__(cls, k):\n        return k", F),
     "__new__": ("class A:\n    def __new__(cls):\n        return board", F),
-    "__slots__ in the body": ("class A:\n    __slots__ = ('x',)", F),
+    "a __dict__ slot": ("class A:\n    __slots__ = ('__dict__',)", F),
     "dunder assigned in the body": ("class A:\n    __init_subclass__ = print", F),
     "definable dunder bound outside a class body": ("__eq__ = lambda a, b: True", F),
     "definable dunder bound in a method": ("class A:\n    def f(self):\n        __eq__ = 1\n        return __eq__", F),
@@ -39,7 +39,8 @@ HOSTILE = {
     "base from a stand-in type": ("import collections\nclass D(collections.defaultdict):\n    pass", F),
     "base from a function": ("class A(print):\n    pass", F),
     # reading what is behind an object
-    "type()": ("class A:\n    pass\nt = type(A())", F),
+    "type() of a class: its metaclass": ("class A:\n    pass\nt = type(A)", F),
+    "type() making a class": ("t = type('A', (), {})", F),
     "__class__ of an instance, then its dict": ("class A:\n    pass\nc = A().__class__.__dict__", F),
     "metaclass through __class__": ("class A:\n    pass\nM = A.__class__\nB = M('B', (str,), {})", F),
     "metaclass through an instance's class": ("class A:\n    pass\nM = A().__class__.__class__", F),

@@ -9,6 +9,10 @@ putting pieces; the test also looks at the host (files, processes) afterwards.
 """
 import json
 import os
+import signal
+import socket
+import subprocess
+import time
 
 import pytest
 
@@ -183,9 +187,10 @@ def test_a_template_refuses_breach_mode_unless_started_for_it():
 
 def test_no_process_outlives_its_program(box):
     ex = breached(box, "import os\nraise RuntimeError(str(os.getpid()))")
-    pid = int(ex.message.rsplit(" ", 1)[1])
-    with pytest.raises(ProcessLookupError):
-        os.kill(pid, 0)
+    assert ex.error == E.RUNTIME_ERROR, ex
+    template = box.pids()[0]
+    with open(f"/proc/{template}/task/{template}/children") as f:
+        assert f.read().split() == []
 
 
 def test_without_seccomp_nothing_runs(monkeypatch):
@@ -228,3 +233,264 @@ def test_a_message_that_raises_is_the_programs_failure(raised):
               "put(board, 'nut', 'red', 0, 0)\nraise Bad()\n")
     ex = execute(source)
     assert not ex.ok and ex.error not in (E.HARNESS_ERROR, None), ex
+
+
+# -- issue 42: signals out, secrets in, the namespaces; each probe in three sandboxes --------------
+# "both": the walls as they are; "seccomp": layer 1 alone (no namespaces); "namespaces": layer 2
+# alone, behind a filter that wrongly allows the calls of every route (signals, fcntl, sockets).
+WRONGLY_ALLOWED = ("kill", "tkill", "tgkill", "rt_sigqueueinfo", "pidfd_open", "pidfd_send_signal", "fcntl",
+                   "getppid", "socket", "connect", "bind", "sendto")
+F_SETOWN, F_SETSIG, F_GETFL, F_SETFL, F_SETOWN_EX, O_ASYNC = 8, 10, 3, 4, 15, 0x2000
+PROBE = """import ctypes, json, os, signal, socket
+libc = ctypes.CDLL(None, use_errno=True)
+libc.syscall.restype = ctypes.c_long
+class Owner(ctypes.Structure):
+    _fields_ = [("type", ctypes.c_int), ("pid", ctypes.c_int)]
+def c(result):
+    return "ok" if result >= 0 else "errno" + str(ctypes.get_errno())
+VICTIM, GROUP, TEMPLATE = {victim}, {group}, {template}
+seen = {{}}
+"""
+
+
+def _walls_up(box) -> bool:
+    template = box.templates(1)[0]
+    return bool(template.walls) and all(up for _, up, _ in template.walls)
+
+
+@pytest.fixture(scope="module", params=["both", "seccomp", "namespaces"])
+def walled(request):
+    from sartco.program import handle
+    from sartco.program.child import confine
+
+    with pytest.MonkeyPatch.context() as patch:
+        if request.param == "seccomp":
+            patch.setattr(handle, "NAMESPACES", False)
+        if request.param == "namespaces":
+            wrong = confine.RULES + tuple(confine.Rule(name, "a wrong rule", "any") for name in WRONGLY_ALLOWED)
+            patch.setattr(handle, "_bpf", confine.compile_filter(wrong))
+        sandbox = LocalSandbox(workers=1, breach=True)
+        sandbox.execute_many(["x = 1"], cache=False)  # the template starts with the patches in place
+        if request.param != "seccomp" and not _walls_up(sandbox):
+            sandbox.close()
+            pytest.skip("the kernel refuses namespaces here (the seccomp-only sandbox is tested)")
+        yield request.param, sandbox
+        sandbox.close()
+
+
+@pytest.fixture
+def victim():
+    """A sacrificial process of the user, leader of its own process group."""
+    proc = subprocess.Popen(["sleep", "600"], start_new_session=True)
+    yield proc
+    proc.kill()
+    proc.wait()
+
+
+def _probe(walled, victim, body: str):
+    """Run a breached program (PROBE + body, which fills `seen`); afterwards the victim lives, the
+    same template serves, and an honest program builds its board. Returns `seen`."""
+    kind, box = walled
+    template = box.pids()[0]
+    source = PROBE.format(victim=victim.pid, group=victim.pid, template=template) + body + \
+        "raise RuntimeError(json.dumps(seen))\n"
+    ex = breached(box, source)
+    time.sleep(0.2)  # a signal the template's read of the answer raised has arrived
+    assert victim.poll() is None, (kind, ex)
+    assert box.pids() == [template], (kind, ex)
+    after = box.execute_many(["put(board, 'nut', 'red', 0, 0)"], cache=False)[0]
+    assert after.ok and after.cells == {"0:0": [["nut", "red"]]}, (kind, after)
+    assert ex.error == E.RUNTIME_ERROR and "RuntimeError: " in ex.message, (kind, ex)
+    return json.loads(ex.message.split("RuntimeError: ", 1)[1])
+
+
+ROUTES = {  # how the answer pipe (3) gets its owner: the kernel signals the owner when the template reads
+    "F_SETOWN pid": "libc.fcntl(3, {F_SETOWN}, VICTIM)",
+    "F_SETOWN group": "libc.fcntl(3, {F_SETOWN}, -GROUP)",
+    "F_SETOWN template": "libc.fcntl(3, {F_SETOWN}, TEMPLATE)",
+    "F_SETOWN pid 1": "libc.fcntl(3, {F_SETOWN}, 1)",
+    "F_SETOWN parent": "libc.fcntl(3, {F_SETOWN}, os.getppid())",
+    "F_SETOWN_EX pid": "libc.fcntl(3, {F_SETOWN_EX}, ctypes.byref(Owner(1, VICTIM)))",
+    "F_SETOWN_EX group": "libc.fcntl(3, {F_SETOWN_EX}, ctypes.byref(Owner(2, GROUP)))",
+    "F_SETOWN_EX tid": "libc.fcntl(3, {F_SETOWN_EX}, ctypes.byref(Owner(0, VICTIM)))",
+}
+
+
+@pytest.mark.parametrize("route", list(ROUTES))
+@pytest.mark.parametrize("signal_number", [signal.SIGKILL, 0])  # 0: the default, SIGIO, which ends a process
+def test_no_signal_out_through_fcntl(walled, victim, route, signal_number):
+    own = ROUTES[route].format(F_SETOWN=F_SETOWN, F_SETOWN_EX=F_SETOWN_EX)
+    seen = _probe(walled, victim, (
+        f"seen['own'] = c({own})\n"
+        f"seen['sig'] = c(libc.fcntl(3, {F_SETSIG}, {int(signal_number)}))\n"
+        f"seen['async'] = c(libc.fcntl(3, {F_SETFL}, libc.fcntl(3, {F_GETFL}) | {O_ASYNC}))\n"))
+    if walled[0] != "namespaces":
+        assert seen == {"own": "errno1", "sig": "errno1", "async": "errno1"}, seen
+
+
+KILLS = {
+    "kill pid": "c(libc.kill(VICTIM, signal.SIGKILL))",
+    "kill group": "c(libc.kill(-GROUP, signal.SIGKILL))",
+    "kill template": "c(libc.kill(TEMPLATE, signal.SIGKILL))",
+    "kill parent": "c(libc.kill(os.getppid(), signal.SIGKILL))",
+    "kill 1": "c(libc.kill(1, signal.SIGKILL))",
+    "term 1": "c(libc.kill(1, signal.SIGTERM))",
+    "int 1": "c(libc.kill(1, signal.SIGINT))",
+    "tgkill": "c(libc.syscall(234, VICTIM, VICTIM, signal.SIGKILL))",
+    "sigqueue": "c(libc.syscall(129, VICTIM, signal.SIGKILL, (ctypes.c_int * 32)(signal.SIGKILL, 0, -1)))",
+    "pidfd": "c(libc.syscall(424, libc.syscall(434, VICTIM, 0), signal.SIGKILL, None, 0))",
+}
+
+
+def test_no_signal_out_by_pid_or_group(walled, victim):
+    seen = _probe(walled, victim, "".join(f"seen[{name!r}] = {call}\n" for name, call in KILLS.items()))
+    if walled[0] != "namespaces":
+        assert set(seen.values()) == {"errno1"}, seen
+
+
+def test_kill_everything_reaches_nothing_in_the_namespaces(walled, victim):
+    """kill(-1) signals every process the caller may signal but itself and pid 1: in the pid namespace, none (ESRCH)
+    (guarded: it runs only where the child's parent is pid 1, i.e. inside a pid namespace)."""
+    if walled[0] != "namespaces":
+        pytest.skip("kill is refused by the filter (test_no_socket_exec_process_thread_or_signal)")
+    seen = _probe(walled, victim, "seen['parent'] = os.getppid()\n"
+                                  "if seen['parent'] == 1:\n    seen['all'] = c(libc.kill(-1, signal.SIGKILL))\n")
+    assert seen == {"parent": 1, "all": "errno3"}, seen  # ESRCH: no process it could signal
+
+
+def test_no_network_and_no_host_socket(walled, victim):
+    """A listener on the host's loopback and an abstract unix socket: unreachable."""
+    listener = socket.socket()
+    listener.bind(("127.0.0.1", 0))
+    listener.listen(1)
+    abstract = socket.socket(socket.AF_UNIX)
+    name = f"\0sartco-test-{os.getpid()}"
+    abstract.bind(name)
+    abstract.listen(1)
+    try:
+        seen = _probe(walled, victim, (
+            "os.close(0)  # room for one descriptor (the rlimit allows 4)\n"
+            "def attempt(family, address):\n"
+            "    try:\n        s = socket.socket(family)\n    except OSError as exc:\n        return 'socket' + str(exc.errno)\n"
+            "    try:\n        s.connect(address)\n        return 'connected'\n"
+            "    except OSError as exc:\n        return 'connect' + str(exc.errno)\n"
+            "    finally:\n        s.close()\n"
+            f"seen['tcp'] = attempt(socket.AF_INET, ('127.0.0.1', {listener.getsockname()[1]}))\n"
+            f"seen['unix'] = attempt(socket.AF_UNIX, {name!r})\n"))
+    finally:
+        listener.close()
+        abstract.close()
+    assert "connected" not in seen.values(), seen
+    if walled[0] != "namespaces":
+        assert set(seen.values()) == {"socket1"}, seen
+    else:  # the socket is made, but the namespace's loopback is down and it has none of the host's sockets
+        assert seen == {"tcp": "connect101", "unix": "connect111"}, seen
+
+
+def test_no_executable_memory_and_no_other_abi(walled, victim):
+    """mmap/mprotect refuse PROT_EXEC (no code of the program's own); the x32 ABI kills the process."""
+    seen = _probe(walled, victim, (
+        "libc.mmap.restype = ctypes.c_void_p\n"
+        "libc.mmap.argtypes = (ctypes.c_void_p, ctypes.c_size_t, ctypes.c_int, ctypes.c_int, ctypes.c_int, ctypes.c_long)\n"
+        "page = libc.mmap(None, 4096, 7, 0x22, -1, 0)\n"
+        "seen['mmap exec'] = 'errno' + str(ctypes.get_errno()) if page in (None, 2 ** 64 - 1) else 'ok'\n"
+        "page = libc.mmap(None, 4096, 3, 0x22, -1, 0)\n"
+        "seen['mmap'] = 'ok' if page not in (None, 2 ** 64 - 1) else 'failed'\n"
+        "seen['mprotect exec'] = c(libc.mprotect(ctypes.c_void_p(page), 4096, 7))\n"))
+    assert seen["mmap"] == "ok", seen
+    if walled[0] != "namespaces":
+        assert (seen["mmap exec"], seen["mprotect exec"]) == ("errno1", "errno1"), seen
+    kind, box = walled
+    template = box.pids()[0]
+    x32 = breached(box, "import ctypes\nctypes.CDLL(None).syscall(0x40000000 | 257, -100, b'/etc/passwd', 0)\n"
+                        "raise RuntimeError('the x32 call returned')")
+    assert (x32.error, x32.message) == (E.RUNTIME_ERROR, "the program crashed its process (SIGSYS)"), x32
+    assert box.pids() == [template] and victim.poll() is None
+
+
+SECRETS = {"OPENAI_API_KEY": "sk-planted-7f3a9c41e2", "HF_TOKEN": "hf_planted_5b8d20c6aa", "SARTCO_SECRET": "planted-0d9e4f"}
+
+
+def _memory(pid: int) -> bytes:
+    """Every readable byte of a process's memory (what a program's child, its fork, could read)."""
+    chunks = []
+    with open(f"/proc/{pid}/maps") as maps, open(f"/proc/{pid}/mem", "rb", 0) as mem:
+        for line in maps:
+            span, perms = line.split()[:2]
+            start, end = (int(x, 16) for x in span.split("-"))
+            if perms[0] == "r" and not line.rstrip().endswith("[vvar]"):
+                try:
+                    mem.seek(start)
+                    chunks.append(mem.read(end - start))
+                except OSError:
+                    pass
+    return b"\0".join(chunks)
+
+
+def test_no_secret_of_the_user_in_a_programs_process(monkeypatch):
+    """Secrets planted in the parent's environment are nowhere in the template (its environ,
+    argv, memory) nor in what a breached child reads of its own environment."""
+    for name, value in SECRETS.items():
+        monkeypatch.setenv(name, value)
+    sandbox = LocalSandbox(workers=1, breach=True)
+    try:
+        ex = sandbox.execute_many([
+            "import ctypes, os\n"
+            "environ = ctypes.POINTER(ctypes.c_char_p).in_dll(ctypes.CDLL(None), 'environ')\n"
+            "raw, k = [], 0\n"
+            "while environ[k]:\n    raw.append(environ[k].decode())\n    k += 1\n"
+            "raise RuntimeError(repr((dict(os.environ), raw)))\n"], mode="breach", cache=False)[0]
+        template = sandbox.templates(1)[0]
+        pids = [template.pid, template.proc.pid]  # the template, and where namespaces hold, its parent
+        seen = [open(f"/proc/{pid}/{part}", "rb").read() for pid in set(pids) for part in ("environ", "cmdline")]
+        seen += [_memory(pid) for pid in set(pids)]
+    finally:
+        sandbox.close()
+    environment, raw = eval(ex.message.split("RuntimeError: ", 1)[1])
+    assert set(environment) <= {"PYTHONHASHSEED", "PYTHONUTF8", "LC_CTYPE"}, environment
+    assert sorted(raw) == sorted(f"{k}={v}" for k, v in environment.items())
+    assert all(b"PYTHONHASHSEED=0" in blob for blob in seen[-len(set(pids)):])  # the scan reads what is there
+    for value in SECRETS.values():
+        assert value not in ex.message
+        assert not any(value.encode() in blob for blob in seen), value
+
+
+def test_the_template_sees_no_host_file_or_process():
+    """With the namespaces up, the template's root is empty and read-only, it is pid 1, it has no
+    capability, and its walls are reported."""
+    from sartco.program import walls
+    from sartco.program.walls import summary
+
+    sandbox = LocalSandbox(workers=1)
+    try:
+        sandbox.execute("x = 1")
+        template = sandbox.templates(1)[0]
+        if not all(up for _, up, _ in template.walls):
+            pytest.skip(f"the kernel refuses namespaces here: {template.walls}")
+        pid = template.pid
+        assert os.listdir(f"/proc/{pid}/root") == []
+        status = dict(line.split(":\t", 1) for line in open(f"/proc/{pid}/status").read().splitlines() if ":\t" in line)
+        assert status["NSpid"].split()[-1] == "1"
+        assert {status[k].strip() for k in ("CapInh", "CapPrm", "CapEff", "CapBnd", "CapAmb")} == {"0" * 16}
+        for kind in ("user", "pid_for_children", "net", "ipc", "uts", "mnt"):
+            assert os.readlink(f"/proc/{pid}/ns/{kind}") != os.readlink(f"/proc/self/ns/{kind}"), kind
+    finally:
+        sandbox.close()
+    shown = walls()
+    assert [w.name for w in shown][:3] == ["seccomp", "rlimits", "environment"] and all(w.up for w in shown), shown
+    assert summary(shown) == "seccomp, rlimits, environment, user+pid+net+ipc+uts+mount namespaces"
+
+
+def test_without_namespaces_the_walls_say_so(monkeypatch, capsys):
+    from sartco.program import handle
+    from sartco.program.walls import of, summary
+
+    monkeypatch.setattr(handle, "NAMESPACES", False)
+    sandbox = LocalSandbox(workers=1)
+    try:
+        assert sandbox.execute("put(board, 'nut', 'red', 0, 0)").ok
+        shown = of(sandbox.templates(1)[0])
+    finally:
+        sandbox.close()
+    assert [w.up for w in shown] == [True] * 3 + [False] * 6
+    assert summary(shown).startswith("seccomp, rlimits, environment; down: user namespace, pid namespace"), summary(shown)

@@ -1,5 +1,5 @@
 """The board picture's content, without a browser (its look in Chromium at the transcript's real
-width: tests/games/test_transcript_boards.py)."""
+width: tests/games/instruct/test_transcript_boards.py)."""
 import re
 
 from sartco.world.render import MIN_LABEL, MIN_WIDTH, diff_svg

@@ -1,127 +1,50 @@
-"""A GameBenchmark base for the games that end in a build: the game names its master, and the
-master its scorer (`scorer_class`: the master also runs it for the transcript's score card,
-sartco.clem.core.card); scoring also writes the full-size board pictures the transcripts link to
-(sartco.clem.core.pictures).
+"""The benchmark base of the games that end in a build, and the run it is built for.
 
-clemcore plays the one GameBenchmark subclass it finds among a games/<game>/master.py's module
-members, so BuildBenchmark is a base beside GameBenchmark, not a subclass of it: a game's master
-module (sartco.games.<game>.master) imports it by name and names both bases, and
-games/<game>/master.py imports only the game's benchmark.
+`BuildBenchmark` (a clemcore GameBenchmark) is what each game's benchmark inherits, beside
+sartco.clem.core.master.BuildGameMaster for its game master: the game names its master
+(`master_class`), the master its scorer (`scorer_class`: the master also runs it for the
+transcript's score card, sartco.clem.core.card); scoring also writes the full-size board pictures
+the transcripts link to (sartco.clem.core.pictures). clemcore plays the one GameBenchmark
+subclass among a games/<game>/master.py's module members, so that file imports the game's
+benchmark and nothing else.
 
-    from pathlib import Path
+    from sartco.clem.core.benchmark import BuildBenchmark
+    from sartco.clem.core.instance_checks import json_fields
+    from sartco.clem.core.master import BuildGameMaster
 
-from clemcore.clemgame import GameSpec
-    from sartco.clem.core.benchmark import BuildBenchmark, json_fields
-
-    class MyGameMaster(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameMaster):
+    class MyGameMaster(BuildGameMaster):
         scorer_class = MyScorer
 
-    class MyGameBenchmark(BuildBenchmark, GameBenchmark):
+    class MyGameBenchmark(BuildBenchmark):
         master_class = MyGameMaster
         episode_fields = json_fields(MyEpisode)   # a TypedDict of sartco.episode
 
-Instance files are checked up front. `clem run` loads the models, then the game (this class),
-then the instance file, and plays; it hands the game neither the instance rows before playing
-nor the `-e` experiment name, and logs any exception with a traceback and goes on (an unknown
-experiment is "0 rows", exit 0). So when the game is built for a run (`run_options`: `sartco
-resume` passes its options in the game spec; under `clem run` they are read from clem's command
-line, the one place that reads it: clemcore hands a game neither -e nor -r) the constructor calls
-`check_instances` with the instance file (`instance_file`: the one clemgame.json or `-i` names)
-and the `-e` experiment, and before any model is asked stops with one line naming the file, the
-experiment and the field (exit code 2): missing or truncated file, no experiments, an episode
-without a field the master reads or with a field of the wrong JSON type, a bad value
-(instance_values.py: board size, target shapes, colours, cells and buildability, empty turns,
-unknown board kinds, tasks, modes, variants), an unknown experiment name (with the list).
-`sartco check-instances FILE` (sartco.clem.core.check) makes the same check without clem.
+The run. `clem run` loads the models, then the game (this class), then the instance file, and
+plays; it hands the game neither the instance rows before playing nor the `-e` experiment name,
+and logs any exception with a traceback and goes on (an unknown experiment is "0 rows", exit 0).
+So when the game is built for a run (`run_options`: `sartco resume` and `sartco suite` pass their
+options in the game spec, `run_selector`; under `clem run` they are read from clem's command line,
+the one place that reads it: clemcore hands a game neither -e nor -r) the constructor checks the
+instance file (`instance_file`: the one clemgame.json or `-i` names) and the `-e` experiment
+(sartco.clem.core.instance_checks.check_instances), and before any model is asked stops with one
+line naming the file, the experiment and the field (exit code 2); then it writes run.json
+(sartco.clem.core.provenance.RunRecorder) for every episode it plays.
 """
 from __future__ import annotations
 
 import argparse
-import json
 import os
 import sys
 import typing
+from pathlib import Path
 from typing import Any
 
-from pathlib import Path
-
-from clemcore.clemgame import GameSpec
-
-from sartco.episode import PlayedEpisode
+from clemcore.clemgame import GameBenchmark, GameSpec
 
 from . import provenance
-from .instance_values import episode_problem, experiment_problem
+from .errors import InstanceFileError
+from .instance_checks import EPISODE_FIELDS, check_instances
 from .pictures import attach_all
-
-
-def json_fields(episode_type) -> dict[str, type]:
-    """field -> JSON type (int, str, dict, list) of every required field of an episode TypedDict
-    of sartco.episode, in the order the type states them."""
-    hints = typing.get_type_hints(episode_type)
-    return {name: typing.get_origin(hint) or hint for name, hint in hints.items()
-            if name in episode_type.__required_keys__}
-
-
-# the fields every build episode needs (read by sartco.clem.core.building and the scorer)
-EPISODE_FIELDS = json_fields(PlayedEpisode)
-_JSON_TYPE = {int: "a number", str: "a string", dict: "an object", list: "a list"}
-
-
-class InstanceFileError(Exception):
-    """An instance file a game cannot play; the message is one line naming file, experiment, field."""
-
-
-def check_instances(path: str, fields, experiment: str | None = None) -> int:
-    """Check an instance file (clemcore's layout: {"experiments": [{"name", "game_instances":
-    [{...}]}]}); return the number of episodes that `experiment` (None: all) selects. `fields`:
-    field -> JSON type every episode must have, or a function of the episode giving that dict."""
-    fields_of = fields if callable(fields) else (lambda _episode: fields)
-    try:
-        with open(path, encoding="utf-8") as f:
-            data = json.load(f)
-    except FileNotFoundError:
-        folder = os.path.dirname(path)
-        found = sorted(n[:-5] for n in os.listdir(folder) if n.endswith(".json")) if os.path.isdir(folder) else []
-        raise InstanceFileError(f"{path}: no such instance file (files in {folder}: {', '.join(found) or 'none'})")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InstanceFileError(f"{path}: cannot read ({exc})")
-    except json.JSONDecodeError as exc:
-        raise InstanceFileError(f"{path}: not valid JSON, truncated or broken at line {exc.lineno} column "
-                                f"{exc.colno} ({exc.msg})")
-    experiments = data.get("experiments") if isinstance(data, dict) else None
-    if not isinstance(experiments, list) or not experiments:
-        raise InstanceFileError(f"{path}: no 'experiments' list (expected {{\"experiments\": [...]}})")
-    names = []
-    for k, exp in enumerate(experiments):
-        if not isinstance(exp, dict) or not isinstance(exp.get("name"), str):
-            raise InstanceFileError(f"{path}: experiment {k}: no 'name'")
-        name = exp["name"]
-        names.append(name)
-        episodes = exp.get("game_instances")
-        if not isinstance(episodes, list):
-            raise InstanceFileError(f"{path}: experiment {name}: no 'game_instances' list")
-        problem = experiment_problem(exp)
-        if problem:
-            raise InstanceFileError(f"{path}: experiment {name}: {problem}")
-        for i, episode in enumerate(episodes):
-            where = f"{path}: experiment {name}, episode {i}"
-            if not isinstance(episode, dict):
-                raise InstanceFileError(f"{where}: not an object")
-            if "game_id" in episode:
-                where = f"{path}: experiment {name}, game_id {episode['game_id']}"
-            for field, kind in fields_of(episode).items():
-                if field not in episode:
-                    raise InstanceFileError(f"{where}: missing field '{field}'")
-                value = episode[field]
-                if not isinstance(value, kind) or (kind is int and isinstance(value, bool)):
-                    raise InstanceFileError(f"{where}: field '{field}' is {type(value).__name__} "
-                                            f"{json.dumps(value)[:40]}, expected {_JSON_TYPE.get(kind, kind.__name__)}")
-            problem = episode_problem(episode)  # the values (instance_values.py)
-            if problem:
-                raise InstanceFileError(f"{where}: {problem}")
-    if experiment is not None and experiment not in names:
-        raise InstanceFileError(f"{path}: no experiment '{experiment}' (experiments: {', '.join(names)})")
-    return sum(len(e["game_instances"]) for e in experiments if experiment in (None, e["name"]))
 
 
 class RunOptions(typing.NamedTuple):
@@ -212,16 +135,14 @@ def instance_file(game_spec) -> str:
     return os.path.join(game_spec.game_path, "in", name if name.endswith(".json") else f"{name}.json")
 
 
-class BuildBenchmark:
-    """The base of a game's GameBenchmark (see the module doc): `class X(BuildBenchmark, GameBenchmark)`."""
+class BuildBenchmark(GameBenchmark):
+    """The base of a game's GameBenchmark (see the module doc): `class X(BuildBenchmark)`."""
     master_class: Any   # a DialogueGameMaster subclass: (game_spec, experiment, player_models); its
                         # `scorer_class`: a GameScorer subclass (game_name, experiment, game_instance)
     episode_fields: dict[str, type] = EPISODE_FIELDS  # field -> JSON type every episode must have
-    game_spec: GameSpec  # set by GameBenchmark, the other base
-    game_name: str
 
     def __init__(self, game_spec: GameSpec) -> None:
-        super().__init__(game_spec)  # type: ignore[call-arg]  # GameBenchmark's, next in the game class's MRO
+        super().__init__(game_spec)
         # writes run.json (sartco.clem.core.provenance) under clem run and sartco resume
         self.recorder: provenance.RunRecorder | None = None
         run = run_options(game_spec)

@@ -24,7 +24,8 @@ from sartco.text import escape
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, SUCCESS_CATEGORY, Category, ErrorCode, category_family, category_of
 from sartco.world.render import diff_svg, differing_cells
 
-from .outcomes import HarnessFault, set_attempts_outcome, set_share_outcome
+from .errors import HarnessFault
+from .outcomes import set_attempts_outcome, set_share_outcome
 from .transcript import code_block, picture, text_block
 
 BOARD_EVENT = "board"               # the GM->GM event that shows target and built board
@@ -178,7 +179,7 @@ def parse_failure(target: dict, message: str, *, turn_codes: list[str] | None = 
 
 def build_for(instance: dict, builder_code: str, turn_codes: list[str] | None = None) -> BuildRecord:
     """`build` with the target, given code and board size of a game instance (the fields of
-    sartco.clem.core.episodes.board_fields); HarnessFault when the sandbox failed (harness_error)."""
+    sartco.clem.core.instance_files.board_fields); HarnessFault when the sandbox failed (harness_error)."""
     record = build(builder_code, instance["target"], given_code=instance["given_code"],
                    rows=instance["rows"], cols=instance["cols"], turn_codes=turn_codes)
     if record.error == ErrorCode.HARNESS_ERROR:
@@ -211,7 +212,8 @@ def build_answers(instance: dict, answers: list[str]) -> BuildRecord:
 def build_answers_many(items: list[tuple[dict, list[str]]]) -> list[BuildRecord]:
     """`build_answers` of many (instance, answers) pairs in one sandbox batch per board size, in
     input order; a build the sandbox failed is returned as its harness_error record, not raised."""
-    from .parsing import ParseError, parse_code
+    from .errors import ParseError
+    from .parsing import parse_code
 
     out: list[BuildRecord | None] = [None] * len(items)
     jobs, places = [], []

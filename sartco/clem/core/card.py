@@ -1,4 +1,5 @@
-"""The score card at the end of every transcript (`ScoreCard`, the first base of both game masters).
+"""The score card at the end of every transcript (`ScoreCard`, the first of BuildGameMaster's bases:
+sartco.clem.core.master holds them in their one order).
 
 When an episode ends (clemcore's `log_game_end`, also after a harness fault) the game master runs
 the game's own scorer (`scorer_class`, the very class `clem score` uses: sartco.clem.core.benchmark)
@@ -154,8 +155,9 @@ def card_recorder(game_name: str, experiment_name: str, game_id) -> GameInteract
 
 
 class ScoreCard:
-    """First base of a game master: logs the score card when the episode ends. The game master
-    class names its scorer in `scorer_class` (the benchmark scores with the same class)."""
+    """BuildGameMaster's first base (sartco.clem.core.master): logs the score card when the episode
+    ends. The game master class names its scorer in `scorer_class` (the benchmark scores with the
+    same class)."""
     scorer_class: type | None = None
 
     def setup(self, **instance):

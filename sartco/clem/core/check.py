@@ -1,5 +1,5 @@
 """`sartco check-instances FILE`: the check `clem run` makes of an instance file before any model
-is asked (sartco.clem.core.benchmark.check_instances), without clem: exit 0 and one line when every
+is asked (sartco.clem.core.instance_checks.check_instances), without clem: exit 0 and one line when every
 episode is playable, else exit 2 and one line naming the file, the experiment (and game_id) and the
 field or value.
 
@@ -17,7 +17,8 @@ from clemcore.clemgame import GameBenchmark, GameRegistry, GameSpec
 
 from sartco.errors import UserError
 
-from .benchmark import InstanceFileError, check_instances
+from .errors import InstanceFileError
+from .instance_checks import check_instances
 
 
 def configure(parser) -> None:

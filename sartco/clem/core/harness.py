@@ -5,7 +5,8 @@ backend's retries given up: a `NoAnswer`, sartco.clem.tooling.batching), the san
 program or gave no usable answer (ErrorCode.HARNESS_ERROR from sartco.program, raised as HarnessFault by
 sartco.clem.core.building.build_for and sartco.games.instruct.paper.finish_paper), or the game master or the
 scorer raised. Such an episode is recorded with its reason and counts as not played:
-- playing (`HarnessGuard`, the first base of both game masters): an exception in a step ends the
+- playing (`HarnessGuard`, BuildGameMaster's second base, after ScoreCard and before
+  MarkdownTranscript: sartco.clem.core.master): an exception in a step ends the
   episode at once with a `harness_error` build record (its reason as the message) under
   BUILD_KEY, a board event for the transcript, Aborted 1 (clemcore: not played) and the
   interactions.json written as usual; a `NoAnswer` answer takes the same path before the game
@@ -28,7 +29,8 @@ from sartco.program.execution import clean
 from sartco.world import ErrorCode
 
 from .building import parse_failure_for, record_build
-from .outcomes import HarnessFault, NoAnswer, log_outcome
+from .errors import HarnessFault
+from .outcomes import NoAnswer, log_outcome
 
 REASON_CHARS = 500
 HARNESS = ErrorCode.HARNESS_ERROR
@@ -47,7 +49,9 @@ def fault_reason(where: str, exc: BaseException) -> str:
 
 
 class HarnessGuard:
-    """First base of a game master: a step that raises ends the episode as harness_error."""
+    """BuildGameMaster's second base (sartco.clem.core.master): a step that raises ends the episode as
+    harness_error. It comes before MarkdownTranscript, whose step escapes the answer: a NoAnswer
+    must be seen before that turns it into plain text, and a fault of that step is caught here."""
 
     def setup(self, **instance):
         self.harness_instance = instance  # the target and board size of the record of a fault

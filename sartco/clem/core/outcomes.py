@@ -22,15 +22,6 @@ from clemcore.clemgame.master import Outcome
 from sartco.world import ErrorCode, category_family
 
 
-class HarnessFault(Exception):
-    """The harness, not the model, failed (the sandbox gave harness_error, or the game master or
-    the scorer raised): sartco.clem.core.harness records the episode as harness_error, aborted."""
-
-    def __init__(self, reason: str):
-        super().__init__(reason)
-        self.reason = reason
-
-
 NO_ANSWER = "model server: "  # how the reason of a NoAnswer begins (sartco resume plays such episodes again)
 
 

@@ -22,22 +22,9 @@ import ast
 import re
 import textwrap
 
-from clemcore.clemgame.errors import ParseError as _ClemParseError
-
-from sartco.world import ErrorCode
-
 from .answer_lines import (FENCE, LABEL, INLINE, KEYWORD_LINE, PYTHON_TAGS, STATEMENT_LINE, TAIL, code_lines,
                            is_code_line, label_at)
-
-
-class ParseError(_ClemParseError):
-    """No code in the answer. A clemcore ParseError, so DialogueGameMaster.step counts it as a
-    violated request; `code` is the sartco error vocabulary's name for it."""
-
-    code = ErrorCode.PARSE_ERROR
-
-    def __init__(self, reason: str, response: str | None = None):
-        super().__init__(reason=reason, response=response, key=ErrorCode.PARSE_ERROR.value)
+from .errors import ParseError
 
 
 def _cut_tail(lines: list[str]) -> list[str]:

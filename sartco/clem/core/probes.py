@@ -50,7 +50,7 @@ from sartco.world import COLORS, SUCCESS_CATEGORY, ErrorCode
 
 from sartco.program import current
 
-from .outcomes import HarnessFault
+from .errors import HarnessFault
 
 PROBED_TASKS = ("optimal_function", "repetition")
 DEFAULT_PROBES = settings.PROBES

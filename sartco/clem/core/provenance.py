@@ -26,13 +26,14 @@ to the one that was playing, and has no `end`) and again when clemcore closes th
 The top level repeats what holds for the whole folder: game, model (the results folder name),
 sartco version and git commit (when the repository is a git checkout), clemcore version, the
 interpreter (python), the version of every package a score depends on (packages: SCORE_PACKAGES),
-the built-in players' and probes' seeds (seeds), the first session's instance file, models,
+the built-in players' and probes' seeds (seeds), the walls around programs (walls: name/up/why
+each, sartco.program.walls), the first session's instance file, models,
 generation and batch size, the first start and the last end, and the counts summed over sessions.
 clemcore's own results/<model-pair>/run.json is a different file (its timing per game) and is left alone.
+What a results folder's run.json says is read back by sartco.clem.core.runs.
 """
 from __future__ import annotations
 
-import hashlib
 import json
 import re
 import platform
@@ -43,23 +44,17 @@ from importlib import metadata
 from pathlib import Path
 from urllib.parse import urlsplit, urlunsplit
 
+from sartco.program.walls import recorded as recorded_walls
 from sartco.settings import CHECKOUT, ERRING_FIX, ERRING_RATE, ERRING_SEED, workspace
 
+from .errors import ProvenanceError
 from .probes import PROBE_SEED
+from .runs import RUN_FILE, load_run, sha256_of
 
-RUN_FILE = "run.json"
 # the words of a key name that make its value a secret (api_key, x-api-token, Authorization, apiKey;
 # not max_tokens)
 SECRET = {"key", "keys", "apikey", "token", "secret", "password", "passwd", "auth", "authorization", "credential",
           "credentials", "bearer", "cookie"}
-
-
-def sha256_of(path: Path) -> str:
-    digest = hashlib.sha256()
-    with open(path, "rb") as f:
-        for block in iter(lambda: f.read(1 << 20), b""):
-            digest.update(block)
-    return digest.hexdigest()
 
 
 def is_secret(name: str) -> bool:
@@ -94,7 +89,7 @@ def environment() -> dict:
                        "executable": sys.executable},
             "packages": {name: _version(name) for name in SCORE_PACKAGES},
             "seeds": {"erring_players": ERRING_SEED, "erring_slip_rate": ERRING_RATE, "erring_fix_rate": ERRING_FIX,
-                      "function_probes": PROBE_SEED}}
+                      "function_probes": PROBE_SEED}, "walls": recorded_walls()}
 
 
 def git_commit() -> str | None:
@@ -124,7 +119,7 @@ def instance_file_info(path: Path) -> dict:
     try:
         data = json.loads(path.read_text(encoding="utf-8"))
     except (OSError, ValueError):
-        data = None  # checked before anything is played (benchmark.check_instances)
+        data = None  # checked before anything is played (instance_checks.check_instances)
     made = {k: data[k] for k in GENERATION_FIELDS if k in data} if isinstance(data, dict) else {}
     dataset = made.get("dataset")
     manifest = root / dataset["path"] / "manifest.json" if isinstance(dataset, dict) and isinstance(
@@ -137,26 +132,6 @@ def instance_file_info(path: Path) -> dict:
 
 def _now() -> str:
     return datetime.now(timezone.utc).isoformat(timespec="seconds")
-
-
-class ProvenanceError(Exception):
-    """A results folder whose runs cannot be merged or checked; one line naming the folder."""
-
-
-def load_run(game_dir: Path) -> dict | None:
-    """The run.json of a results/<model>/<game> folder, or None when there is none."""
-    path = Path(game_dir) / RUN_FILE
-    if not path.is_file():
-        return None
-    try:
-        data = json.loads(path.read_text(encoding="utf-8"))
-    except (OSError, ValueError) as exc:
-        raise ProvenanceError(f"{path}: cannot read ({exc}); repair it, or remove it to check the folder against "
-                              f"its game's default instance file") from None
-    if not isinstance(data, dict) or not isinstance(data.get("instance_file"), dict):
-        raise ProvenanceError(f"{path}: not a SARTCo run.json (no 'instance_file'); remove it to check the folder "
-                              f"against its game's default instance file")
-    return data
 
 
 def model_entry(model) -> dict:
@@ -219,7 +194,7 @@ class RunRecorder:
         data = {"game": self.game_name, "model": path.parent.parent.name,
                 "sartco_version": self.software["packages"]["sartco-bench"], "git_commit": self.software["git_commit"],
                 "clemcore_version": self.software["packages"]["clemcore"], "python": self.software["python"],
-                "packages": self.software["packages"], "seeds": self.software["seeds"],
+                "packages": self.software["packages"], "seeds": self.software["seeds"], "walls": self.software["walls"],
                 "instance_file": first["instance_file"], "models": first["models"], "generation": first["generation"],
                 "batch_size": first.get("batch_size"), "start": first["start"], "end": sessions[-1]["end"],
                 "counts": {"sessions": len(sessions),
@@ -229,69 +204,3 @@ class RunRecorder:
         tmp = path.with_suffix(".json.tmp")
         tmp.write_text(json.dumps(data, indent=2) + "\n", encoding="utf-8")
         tmp.replace(path)
-
-
-def selecting(run: dict) -> list[dict]:
-    """The sessions of a run.json that chose episodes: every session but the resumes (a resume
-    plays again what these chose)."""
-    return [s for s in run.get("sessions", []) if not s.get("resume")]
-
-
-def selection(run: dict) -> set[str] | None:
-    """The experiments a results folder should hold by its run.json: those its sessions chose with
-    -e, None (all of the instance file) when one of them had no -e."""
-    chosen = selecting(run)
-    if not chosen or any(not s.get("experiment") for s in chosen):
-        return None
-    return {s["experiment"] for s in chosen}
-
-
-def settings_for(run: dict | None, experiment: str) -> dict:
-    """{temperature, max_tokens, batch_size} an experiment was played with: those the last session
-    that chose it recorded (None for what it did not record, and without run.json)."""
-    chose = [s for s in selecting(run or {}) if s.get("experiment") in (None, experiment)]
-    session = chose[-1] if chose else {}
-    generation = session.get("generation") or {}
-    return {"temperature": generation.get("temperature"), "max_tokens": generation.get("max_tokens"),
-            "batch_size": session.get("batch_size")}
-
-
-def game_entries() -> dict[str, Path]:
-    """game name -> its default instance file, for every entry of the workspace's games/*/clemgame.json (sartco.settings)."""
-    found = {}
-    for spec_file in sorted((workspace() / "games").glob("*/clemgame.json")):
-        entries = json.loads(spec_file.read_text(encoding="utf-8"))
-        for entry in entries if isinstance(entries, list) else [entries]:
-            name = entry.get("instances") or "instances"
-            found[entry["game_name"]] = spec_file.parent / "in" / (name if name.endswith(".json") else f"{name}.json")
-    return found
-
-
-def played_instance_file(game_dir: Path, run: dict | None = None) -> tuple[Path, dict | None]:
-    """(the instance file a results/<model>/<game> folder was played from, its run.json or None):
-    run.json's when there is one, else the game entry's default. Raises ProvenanceError when the
-    sessions of run.json name different instance files (hashes) or the file changed since."""
-    game_dir = Path(game_dir)
-    run = run if run is not None else load_run(game_dir)
-    if run is None:
-        entries = game_entries()
-        if game_dir.name not in entries:
-            raise ProvenanceError(f"{game_dir}: no run.json and no game entry '{game_dir.name}' in games/*/clemgame.json "
-                                  f"(run sartco from the checkout or the folder `sartco games` wrote)")
-        return entries[game_dir.name], None
-    files = {(s["instance_file"]["path"], s["instance_file"]["sha256"]) for s in run.get("sessions", [])}
-    if len({sha for _, sha in files}) > 1:
-        listing = ", ".join(f"{path} sha256 {sha[:12]}" for path, sha in sorted(files))
-        raise ProvenanceError(f"{game_dir}: refusing to merge runs played from different instance files ({listing}); "
-                              f"play each instance file into a results folder (-r) of its own")
-    recorded = run["instance_file"]
-    path = Path(recorded["path"])
-    path = path if path.is_absolute() else workspace() / path
-    if not path.is_file():
-        raise ProvenanceError(f"{game_dir}: its instance file {recorded['path']} (run.json) no longer exists; "
-                              f"regenerate it (run.json's instance_file.generated) or play the run again into a new -r folder")
-    if sha256_of(path) != recorded["sha256"]:
-        raise ProvenanceError(f"{game_dir}: instance file {recorded['path']} changed since the run "
-                              f"(sha256 {recorded['sha256'][:12]} in run.json, now {sha256_of(path)[:12]}); restore the "
-                              f"file the run was played from (e.g. git checkout) or play it again into a new -r folder")
-    return path, run

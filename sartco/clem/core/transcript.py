@@ -4,7 +4,7 @@ clemcore renders a message either as escaped text with line breaks (leading spac
 loop body sits flush with its `for`) or, when the interactions record holds `"markdown": true`,
 through Python-Markdown. Markdown alone does not help either: clemcore strips the backticks of a
 message that is one fenced block (the most common answer), and an unfenced answer's lines run
-together into one paragraph. So our game masters (the `MarkdownTranscript` mixin) set the key and
+together into one paragraph. So our game masters (the `MarkdownTranscript` base) set the key and
 log every message in `display` form: fenced code as a code block, everything else as
 preformatted text that keeps its line breaks and indentation and wraps long lines; all text is
 HTML-escaped (model output is hostile input: no markup of a model reaches the reader's browser).
@@ -90,7 +90,8 @@ def display(text: str) -> str:
 
 
 class MarkdownTranscript:
-    """Mixin for a DialogueGameMaster (put it first among the bases): the transcript shows every
+    """BuildGameMaster's third base (sartco.clem.core.master), right before DialogueGameMaster,
+    whose step and log methods it wraps: the transcript shows every
     message of the game in `display` form (the action's `content`, what clemcore renders), and the
     action keeps the text under `text` (RAW_KEY) for anyone who reads interactions.json.
     clemcore's `step` logs each exchange through these two methods (the same actions as clemcore's

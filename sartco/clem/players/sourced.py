@@ -4,7 +4,7 @@ A player answers in one of three ways (clemcore's Player):
 - a clemcore model: the model (the game master parses its answer);
 - `mock`, `programmatic`, `rulebased`, `erring` (CustomResponseModel): the player's answer source, an object
   chosen once when the player is made (sartco.clem.players.answers for cobot_instruct's builder,
-  sartco.games.describe.dialogue_answers for cobot_describe's players): `answers.answer(turn)`;
+  sartco.games.describe.players for cobot_describe's players): `answers.answer(turn)`;
 - `human`: the terminal; type the answer, end with a line holding only "." (or end of input).
 The game master never answers for a player: it sends messages and reads answers.
 """

@@ -1,5 +1,5 @@
 """Which episodes of a results/<model>/<game> folder are not (validly) played and scored, against
-the instance file it was played from (sartco.clem.core.provenance.played_instance_file). Shared by
+the instance file it was played from (sartco.clem.core.runs.played_instance_file). Shared by
 `sartco report` (sartco.report.completeness) and `sartco resume` (sartco.clem.tooling.resume).
 
 An episode of the instance file is one of
@@ -10,7 +10,7 @@ An episode of the instance file is one of
   unreadable  interactions.json or scores.json is not valid JSON
   scored      everything else.
 The experiments checked: with run.json those its sessions chose (all of the file when one of
-them had no -e; a resume chooses nothing new: sartco.clem.core.provenance.selection). A folder without run.json (played before run.json existed, or in-process by
+them had no -e; a resume chooses nothing new: sartco.clem.core.runs.selection). A folder without run.json (played before run.json existed, or in-process by
 tests) is checked against its game's default instance file only when every episode it holds is
 an episode of that file (its instance.json); else it is "unverifiable" (listed, not an error).
 """
@@ -19,7 +19,8 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from sartco.clem.core.provenance import ProvenanceError, played_instance_file, selection
+from sartco.clem.core.errors import ProvenanceError
+from sartco.clem.core.runs import played_instance_file, selection
 
 INCOMPLETE_STATUS = 3  # exit status of `sartco report` / `sartco resume` when an episode is not scored
 PROBLEMS = ("missing", "errored", "unscored", "unreadable")

@@ -7,14 +7,15 @@ a resume chooses nothing new). Resume first scores the played-but-unscored episo
 score` does), then plays exactly the missing and errored ones (and those whose interactions.json
 is unreadable, and the harness_error ones the model server gave no answer to, scored just now
 included) through clemcore's own `run` with an instance filter, into the same folder and under
-the same episode ids, and scores them; nothing else is played again or rescored. The instance
-file is run.json's (sartco.clem.core.provenance); each episode is played with the temperature,
-max_tokens and batch size of the session that chose it (provenance.settings_for), so the result
+the same episode ids, and scores them; nothing else is played again or rescored. A folder complete
+afterwards is transcribed (as `clem transcribe`: every episode's transcript.html). The instance
+file is run.json's (sartco.clem.core.runs); each episode is played with the temperature,
+max_tokens and batch size of the session that chose it (runs.settings_for), so the result
 equals an uninterrupted run's. `-t` / `-l` / `-b` only fill in what run.json does not record
 (else clem run's defaults, CLEM_DEFAULTS); one that contradicts run.json is refused.
 
 Exit status: 0 when the folder is complete afterwards (also when nothing was to do); 2 when it
-refuses (no such results folder, the instance file changed since the first run, runs of
+refuses (a model or game clem does not know, no such results folder, the instance file changed since the first run, runs of
 different instance files in one folder, a setting that contradicts run.json); 3
 (sartco.clem.tooling.completeness.INCOMPLETE_STATUS) when episodes are still not scored
 afterwards, or the model server again gave no answer to some.
@@ -26,12 +27,14 @@ import json
 import shutil
 from pathlib import Path
 
-from sartco.clem.core import provenance
+from sartco.clem.core import runs
+from sartco.clem.core.errors import ProvenanceError
 from sartco.clem.core.benchmark import resume_selector
 from sartco.clem.core.outcomes import NO_ANSWER
 from sartco.episode import HARNESS_REASON
 from sartco.errors import UserError
 
+from .selectors import check_models, game_spec
 from .completeness import INCOMPLETE_STATUS, Unverifiable, check_game, episode_folder, needs_play
 
 
@@ -81,7 +84,7 @@ def unanswered(game_dir: Path, problems: list[dict]) -> list[dict]:
 def _problems(game_dir: Path):
     try:
         expected, problems, run = check_game(game_dir)
-    except (provenance.ProvenanceError, Unverifiable) as exc:
+    except (ProvenanceError, Unverifiable) as exc:
         raise UserError(str(exc)) from None
     return sum(expected.values()), problems, run
 
@@ -90,7 +93,7 @@ def settings(args: argparse.Namespace, game_dir: Path, run_json: dict | None, ex
     """(temperature, max_tokens, batch_size) to play an episode of `experiment` again with: run.json's
     (the session that chose it), else the option given, else CLEM_DEFAULTS. UserError when an option
     given contradicts run.json."""
-    recorded = provenance.settings_for(run_json, experiment)
+    recorded = runs.settings_for(run_json, experiment)
     out = []
     for name, option in OPTIONS.items():
         given = getattr(args, name)
@@ -133,11 +136,14 @@ def play(args: argparse.Namespace, instance_path: Path, episodes: list[dict], te
 
 
 def run(args: argparse.Namespace) -> int:
+    check_models(args.models)
+    game_spec(args.game)
     game_dir = args.results / run_folder(args.models) / args.game
     if not game_dir.is_dir():
-        raise UserError(f"{game_dir}: no such folder (nothing was played for this game and model; use clem run)")
+        raise UserError(f"{game_dir}: no such folder (nothing was played for this game and model; play it with "
+                        f"`clem run -g {args.game} -m {' '.join(args.models)} -r {args.results}`)")
     expected, problems, run_json = _problems(game_dir)
-    instance_path, _ = provenance.played_instance_file(game_dir, run_json)
+    instance_path, _ = runs.played_instance_file(game_dir, run_json)
     # first score what was played: a harness_error among them (no answer from the model server) is played again below
     rescore = [p for p in problems if not needs_play(game_dir, p)]
     score(args.game, game_dir, rescore)
@@ -148,7 +154,7 @@ def run(args: argparse.Namespace) -> int:
     for p in replay:
         groups.setdefault(settings(args, game_dir, run_json, p["experiment"]), []).append(p)
     shown = ("; ".join(f"temperature {t}, max_tokens {m}, batch size {b}" for t, m, b in groups) or "nothing to play")
-    chosen = provenance.selection(run_json) if run_json else None
+    chosen = runs.selection(run_json) if run_json else None
     scope = f"experiment {', '.join(sorted(chosen))}" if chosen else "all experiments"
     print(f"sartco resume: {game_dir}: {expected} episodes in {instance_path.name} ({scope}), {len(replay)} to play, "
           f"{len(rescore)} to score ({shown})" + ("" if run_json else " (no run.json: the game's default instance file)"),
@@ -169,5 +175,8 @@ def run(args: argparse.Namespace) -> int:
               f"played (harness_error; first: {still[0]['experiment']} game_id {still[0]['game_id']}); check the "
               f"server (its address: run.json's models, base_url), then run sartco resume again", flush=True)
         return INCOMPLETE_STATUS
-    print(f"sartco resume: {game_dir}: all {expected} episodes scored")
+    from clemcore.clemgame.transcripts.builder import build_transcripts
+
+    build_transcripts(str(game_dir))
+    print(f"sartco resume: {game_dir}: all {expected} episodes scored and transcribed")
     return 0

@@ -5,7 +5,7 @@ beside the user's own entries in DIR/model_registry.json.
 
 The model is a CustomResponseModel, so clemcore's Player answers from the player's answer source,
 chosen by this model name when the player is made (sartco.clem.players.answers.instruct_answers: the
-follower instead of the gold code; sartco.games.describe.dialogue_answers in cobot_describe). The same
+follower instead of the gold code; sartco.games.describe.players in cobot_describe). The same
 backend serves `erring` (entry {"model_name": "erring", "backend": "rulebased"}): the follower
 with seeded mistakes (sartco.clem.players.erring).
 """

@@ -13,6 +13,11 @@ in the game selector (sartco.clem.core.benchmark.run_selector), so that each sam
 says what `clem run` would have written. `sartco report -r RESULTS` leaves RESULTS/samples out of
 its other tables. The runs read the current working directory and the environment as a plain
 `clem run` does (key.json, model_registry.json, CLEMBENCH_HOME).
+
+The model, the game, the instance file and the experiment are checked before any sample is played
+(sartco.clem.tooling.selectors). The same command again, after a sample failed or was stopped,
+completes what is there with `sartco resume` (its settings as run.json records them; one given
+that differs is refused) and plays the samples still missing.
 """
 from __future__ import annotations
 
@@ -57,20 +62,41 @@ def play(args: argparse.Namespace, folder: Path) -> None:
     except SystemExit as stop:  # clemcore: 1 after logging an episode's exception; a bad instance file: 2
         if stop.code:
             raise UserError(f"the run of {folder} failed (exit {stop.code}; its message is above): fix what it "
-                            f"names, then complete that sample with `sartco resume`, or remove the samples folder "
-                            f"and sample again") from None
+                            f"names, then run the same `sartco sample` command again: it completes that sample "
+                            f"and plays the ones still missing") from None
     clem_cli.score(args.game, results_dir=str(folder))
 
 
+def complete(args: argparse.Namespace, folder: Path, game_dir: Path) -> None:
+    """A sample played before (a failed or stopped run): its missing episodes, by `sartco resume`."""
+    from .resume import run as resume
+
+    status = resume(argparse.Namespace(results=folder, game=args.game, models=[args.model],
+                                       temperature=args.temperature, max_tokens=args.max_tokens,
+                                       batch_size=args.batch_size))
+    if status:
+        raise UserError(f"{game_dir}: still incomplete (its message is above); run the same command again")
+
+
 def run(args: argparse.Namespace) -> int:
+    from .resume import run_folder
+    from .selectors import check_instances, check_models
+
     if args.samples < 1:
         raise UserError(f"-n {args.samples}: at least one sample expected (give -n 1 or more)")
+    check_models([args.model])
+    check_instances(args.game, args.instances, args.experiment)
     root = args.results / SAMPLES
-    if root.exists():
-        raise UserError(f"{root} exists already: choose another -r or remove it")
     for k in range(1, args.samples + 1):
         folder = root / f"s{k}"
-        play(args, folder)
+        game_dir = folder / run_folder([args.model]) / args.game
+        if game_dir.is_dir():
+            complete(args, folder, game_dir)
+        elif folder.exists():
+            raise UserError(f"{folder} holds samples of another game or model: choose another -r, or remove "
+                            f"{root} (rm -r {root})")
+        else:
+            play(args, folder)
         print(f"sartco sample: sample {k} of {args.samples} in {folder}", flush=True)
     print(f"sartco sample: {args.samples} samples in {root}; `sartco report -r {args.results}` writes passk.md")
     return 0

@@ -14,34 +14,96 @@ The builder never sees the target; the describer never sees code (only the error
 program stopped, and the board it left).
 
 - settings_of(experiment) -> Settings          mode, K, R (one-line ValueError on a bad field)
-- parse_builder_answer / parse_answer / parse_review   the labels of the new turns
+- parse_instruction                              the describer's first answer: the text under the
+                                                "Instruction:" label (none: ParseError, aborted)
+- parse_builder_answer / parse_answer / parse_review   the labels of the later turns
+- INSTRUCTION_SLOT / fill_builder_prompt         the builder prompt's place for the instruction
+- log_instruction (INSTRUCTION_KEY)              the instruction as passed on, for the scorer and
+                                                `sartco import-instructions`
 - clarify_note / question_message / answer_message / review_message / correction_message
                                                 the texts (resources/templates/dialogue/*.j2)
 - turns: Dialogue / DialogueLog / State / BuilderTurn   the state machine of the turns and the record
-- DialogueScorer                                 DescribeScorer + ES/F1 after the first and the
-                                                last build, ES after round k, first success round,
-                                                questions, corrections, describer words
+The players are players.py's, the scores scorer.py's (DialogueScorer).
 """
 from __future__ import annotations
 
-import math
 import re
 from dataclasses import dataclass
 
-from clemcore.clemgame import metrics
-
 from sartco import settings
+from sartco.clem.core.answer_lines import in_fence
 from sartco.clem.core.building import BuildRecord
 from sartco.clem.core.feedback import BOARD_FORM
-from sartco.clem.core.parsing import ParseError, parse_code
-from sartco.episode import (ATTEMPTS_KEY, CELL_F1_AT_1, CELL_F1_AT_N, CORRECTIONS_SENT, DESCRIBER_WORDS, DIALOGUE_KEY,
-                            DIALOGUE_MODES, DIALOGUE_SCORES, ES_AT_1, ES_AT_N, FIRST_SUCCESS_ROUND, QUESTIONS_ASKED,
-                            round_score)
+from sartco.clem.core.errors import ParseError
+from sartco.clem.core.parsing import parse_code
+from sartco.episode import DIALOGUE_MODES, INSTRUCTION_KEY
 from sartco.instances.templates import render
 from sartco.world.render import grid_explanation, grid_text
 
-from .describer import DescribeScorer, label, text_under
-from .turns import BuilderTurn, DialogueLog, Said
+from .turns import BuilderTurn
+
+INSTRUCTION_SLOT = "<<DESCRIBER_INSTRUCTION>>"  # where a stored builder prompt takes the instruction
+
+
+def fill_builder_prompt(prompt: str, instruction: str) -> str:
+    """The builder's prompt (rendered with builder_prompt(..., instruction=INSTRUCTION_SLOT) at
+    instance generation) with the describer's instruction in its slot."""
+    if INSTRUCTION_SLOT not in prompt:
+        raise ValueError("the builder prompt has no slot for the describer's instruction")
+    head, _, tail = prompt.rpartition(INSTRUCTION_SLOT)
+    return f"{head}{instruction}{tail}"
+
+def label(words: str) -> re.Pattern:
+    """A line that opens with one of these labels: "Instruction:", "**Instructions:**",
+    "### Question:" (words: a regex alternative, e.g. r"instructions?"); group `rest` holds the
+    rest of the line."""
+    return re.compile(rf"^\s*(?:#+\s*)?(?:\*\*|__)?\s*(?:{words})\s*(?:\*\*|__)?\s*:\s*(?:\*\*|__)?\s*(?P<rest>.*)$",
+                      re.IGNORECASE)
+
+
+INSTRUCTION_LABEL = label(r"instructions?")
+# what ends a labelled text: another answer label or a code fence (a model going on with a program)
+_END = re.compile(r"^\s*(?:#+\s*)?(?:\*\*|__)?\s*(?:output|function|usage|code|answer|question|correction)\s*(?:\*\*|__)?\s*:"
+                  r"|^\s*(?:`{3,}|~{3,})", re.IGNORECASE)
+
+
+def text_under(text: str | None, pattern: re.Pattern) -> str | None:
+    """The text after the first line outside code fences that matches `pattern` (a `label`), up to another answer
+    label or a code fence, blank lines squeezed; None when no line matches; "" when nothing follows."""
+    lines = str(text or "").replace("\r\n", "\n").replace("\r", "\n").split("\n")
+    fenced = in_fence(lines)  # a label inside a fence is part of the code there ("# Question: ..." a comment)
+    found = next(((i, m) for i, line in enumerate(lines) if not fenced[i] and (m := pattern.match(line))), None)
+    if found is None:
+        return None
+    start, match = found
+    body = [match.group("rest")]
+    for line in lines[start + 1:]:
+        if _END.match(line):
+            break
+        body.append(line)
+    kept = [line.rstrip() for line in body]
+    return re.sub(r"\n{3,}", "\n\n", "\n".join(kept)).strip().strip("*_").strip()
+
+
+def parse_instruction(text: str) -> str:
+    """The instruction in a describer's answer: the text after the first "Instruction:" label, up
+    to an Output/Function/Usage/Code label or a code fence; blank lines squeezed. Raises
+    ParseError when there is no label or nothing after it. Junk after the label is passed on:
+    the builder has to cope with it, as with any bad instruction."""
+    if text is None or not str(text).strip():
+        raise ParseError("no instruction found: the describer gave an empty answer", response=text)
+    instruction = text_under(text, INSTRUCTION_LABEL)
+    if instruction is None:
+        raise ParseError("no instruction found: the describer's answer has no 'Instruction:' label", response=text)
+    if not instruction:
+        raise ParseError("no instruction found: the describer's 'Instruction:' label is followed by nothing",
+                         response=text)
+    return instruction
+
+
+def log_instruction(game_master, text: str | None, combo_name: str, error: str | None = None) -> None:
+    game_master.log_key(INSTRUCTION_KEY, {"text": text, "error": error, "combo_name": combo_name})
+
 
 MODES = DIALOGUE_MODES
 MODE_FIELD, QUESTIONS_FIELD, CORRECTIONS_FIELD = "mode", "questions", "corrections"
@@ -77,7 +139,7 @@ def settings_of(experiment: dict) -> Settings:
     return Settings(mode, counts[QUESTIONS_FIELD], counts[CORRECTIONS_FIELD])
 
 
-# --- reading the new turns --------------------------------------------------------------------------
+# --- reading the later turns -------------------------------------------------------------------------
 def parse_builder_answer(text: str, settings: Settings, asked: int) -> BuilderTurn:
     """A question when a clarifying builder asks (a "Question:" label), else the code. ParseError
     for a question past the limit (it counts as an answer without code), an empty question, or an
@@ -140,33 +202,3 @@ def review_message(record: BuildRecord, corrections_left: int) -> str:
 
 def correction_message(correction: str, questions_left: int) -> str:
     return render("dialogue/correction.j2", correction=correction, questions_left=questions_left).strip()
-
-
-class DialogueScorer(DescribeScorer):
-    """DescribeScorer (Main Score = 100 x final ES, ...) plus, from every build (ATTEMPTS_KEY)
-    and the dialogue log (DIALOGUE_KEY): ES@1 and Cell F1@1 (the first build), ES@N and Cell
-    F1@N (the last), "ES Round k" for k = 0..R (the board standing after k corrections; the
-    last board carries on once the episode ended), First Success Round (NaN: never), Questions
-    Asked, Corrections Sent, Describer Words (instruction, answers and corrections). NaN for
-    the build scores when the episode was aborted."""
-
-    def compute_episode_scores(self, interactions: dict) -> None:
-        super().compute_episode_scores(interactions)
-        settings = settings_of(self.experiment)
-        log = DialogueLog(**interactions[DIALOGUE_KEY]) if interactions.get(DIALOGUE_KEY) else \
-            DialogueLog(settings.mode, settings.questions, settings.corrections)
-        builds = [BuildRecord.from_json(b) for b in interactions.get(ATTEMPTS_KEY) or []]
-        played = bool(builds) and not interactions.get(metrics.METRIC_ABORTED, 0)
-        nan = math.nan
-        es = [b.es for b in builds]
-        values = {
-            ES_AT_1: es[0] if played else nan, ES_AT_N: es[-1] if played else nan,
-            CELL_F1_AT_1: builds[0].f1 if played else nan, CELL_F1_AT_N: builds[-1].f1 if played else nan,
-            FIRST_SUCCESS_ROUND: es.index(1) if 1 in es else nan,
-            QUESTIONS_ASKED: log.count(Said.QUESTION), CORRECTIONS_SENT: log.count(Said.CORRECTION),
-            DESCRIBER_WORDS: log.describer_words,
-        }
-        for name in DIALOGUE_SCORES:
-            self.log_episode_score(name, values[name])
-        for k in range(settings.corrections + 1):
-            self.log_episode_score(round_score(k), es[min(k, len(es) - 1)] if played else nan)

@@ -2,11 +2,11 @@
 sees only those instructions writes Python; the game master runs the code and scores the board.
 
 Player 1, the Describer: the describer prompt (environment, the board as the paper's text grid,
-the object's name, the grid explanation; answer under "Instruction:"), sartco.games.describe.describer.
+the object's name, the grid explanation; answer under "Instruction:"), sartco.games.describe.players.
 Player 2, the Builder: cobot_instruct's builder prompt (with its in-context examples) holding the
 describer's instruction, sartco.clem.players.sourced; its code runs through sartco.clem.core.building.
 `clem run -g cobot_describe -m A B`: A describes, B builds; `-m A`: A plays both roles.
-Programmatic players (sartco.games.describe.dialogue_answers): `mock` and `rulebased` describe with the
+Programmatic players (sartco.games.describe.players): `mock` and `rulebased` describe with the
 episode's template instruction; as builders both are the rule-based follower reading the
 describer's text (never gold code); `erring` omits and garbles pieces as describer and slips as
 builder (sartco.games.describe.erring_dialogue).
@@ -30,20 +30,19 @@ a build, leaves the last board standing.
 """
 from __future__ import annotations
 
-from clemcore.clemgame import DialogueGameMaster, GameBenchmark, Player
+from clemcore.clemgame import Player
 from clemcore.clemgame.errors import ParseError
 
-from sartco.clem.core.benchmark import BuildBenchmark, json_fields
+from sartco.clem.core.benchmark import BuildBenchmark
 from sartco.clem.core.building import BuildRecord, build_for, parse_failure_for, record_build
-from sartco.clem.core.card import ScoreCard
-from sartco.clem.core.harness import HarnessGuard
+from sartco.clem.core.instance_checks import json_fields
+from sartco.clem.core.master import BuildGameMaster
 from sartco.clem.core.outcomes import log_outcome
-from sartco.clem.core.transcript import MarkdownTranscript
-from sartco.games.describe.describer import Describer, fill_builder_prompt, log_instruction, parse_instruction
-from sartco.games.describe.dialogue import (DialogueScorer, answer_message, correction_message, parse_answer,
-                                           parse_builder_answer, parse_review, question_message, review_message,
-                                           settings_of)
-from sartco.games.describe.dialogue_answers import builder_answers, describer_answers
+from sartco.games.describe.dialogue import (answer_message, correction_message, fill_builder_prompt, log_instruction,
+                                           parse_answer, parse_builder_answer, parse_instruction, parse_review,
+                                           question_message, review_message, settings_of)
+from sartco.games.describe.players import Describer, builder_answers, describer_answers
+from sartco.games.describe.scorer import DialogueScorer
 from sartco.games.describe.turns import BuilderTurn, Dialogue, DialogueLog, Move, Said, State
 from sartco.clem.players.sourced import Builder
 from sartco.episode import ATTEMPTS_KEY, DIALOGUE_KEY, DescribeEpisode
@@ -51,7 +50,7 @@ from sartco.episode import ATTEMPTS_KEY, DIALOGUE_KEY, DescribeEpisode
 DESCRIBER_PARSERS = {State.INSTRUCTION: parse_instruction, State.ANSWER: parse_answer, State.REVIEW: parse_review}
 
 
-class CobotDescribe(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameMaster):
+class CobotDescribe(BuildGameMaster):
     scorer_class = DialogueScorer
 
     def _on_setup(self, **instance):
@@ -129,6 +128,6 @@ class CobotDescribe(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameMas
         log_outcome(self)
 
 
-class CobotDescribeBenchmark(BuildBenchmark, GameBenchmark):
+class CobotDescribeBenchmark(BuildBenchmark):
     master_class = CobotDescribe
     episode_fields = json_fields(DescribeEpisode)

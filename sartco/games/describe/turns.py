@@ -3,7 +3,7 @@
 makes as the dialogue goes on (Dialogue's methods: instruct, ask, answer, build, done, correct,
 fail); a builder's answer as read (BuilderTurn: a question or code); the kinds of what was said
 (Said: the log's `kind` values). The built-in players read what they heard from the Dialogue
-(sartco.games.describe.dialogue_answers).
+(sartco.games.describe.players).
 
     INSTRUCTION --instruct--> BUILD --ask--> ANSWER --answer--> BUILD
     BUILD --build--> REVIEW (corrections left, the answer held code) | OVER
@@ -97,7 +97,7 @@ UNREAD = {State.INSTRUCTION: Said.NO_INSTRUCTION, State.ANSWER: Said.NO_ANSWER, 
 class Dialogue:
     """What has been said in an episode so far and whose turn it is: the game master moves it
     with the transitions below as the dialogue goes on; the built-in players read what they
-    heard from it (sartco.games.describe.dialogue_answers)."""
+    heard from it (sartco.games.describe.players)."""
     log: DialogueLog
     state: State = State.INSTRUCTION
     instruction: str | None = None

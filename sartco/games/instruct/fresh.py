@@ -14,17 +14,17 @@ have no human- or model-written instructions.
 """
 from __future__ import annotations
 
+from argparse import Namespace
 from pathlib import Path
 
 from sartco.errors import UserError
 from sartco.instances.config import parse_config
 from sartco.instances.fresh import board_keys, fresh_boards
 from sartco.instances.storage import load_dataset
-from sartco.settings import shown, workspace
+from sartco.settings import shown
 
-from .instruct_generator import InstructGenerator
+from .instancegenerator import CELLS, DEFAULT_PUBLISHED, InstructGenerator, write
 
-DEFAULT_PUBLISHED = workspace() / "instances" / "published"   # `sartco import ../shared/sartco-data/published --out ...`
 SOURCE = "template"
 
 
@@ -68,3 +68,10 @@ class FreshInstanceGenerator(InstructGenerator):
               f"({', '.join(f'{k} {n}' for k, n in report.boards.items())}); also in the published data or the "
               f"seed-42 dataset: {report.overlap}; candidates rejected for being one: {report.rejected}; "
               f"stratum fallbacks: {report.fallbacks}")
+
+
+def instances_fresh(options: Namespace, game_dir: Path) -> str:
+    """The file function of `sartco instances instruct-fresh` (as the others of instancegenerator)."""
+    return write(FreshInstanceGenerator(str(game_dir), CELLS), "instances_fresh.json", options.seed,
+                 dataset_dir=options.dataset, n_examples=options.examples, fresh_seed=options.fresh,
+                 published_dir=options.published, per_experiment=options.fresh_episodes or None)

@@ -30,25 +30,25 @@ every turn as the authors' scorer did and records our build beside it.
 """
 from __future__ import annotations
 
-from clemcore.clemgame import DialogueGameMaster, GameBenchmark, Player
+from clemcore.clemgame import Player
 from clemcore.clemgame.errors import ParseError
 
-from sartco.clem.core.benchmark import BuildBenchmark, json_fields
+from sartco.clem.core.benchmark import BuildBenchmark
 from sartco.clem.core.building import BuildRecord, build_for, parse_failure_for, record_build
-from sartco.clem.core.card import ScoreCard
 from sartco.clem.core.feedback import feedback_for, max_attempts
-from sartco.clem.core.harness import HarnessGuard
+from sartco.clem.core.instance_checks import json_fields
+from sartco.clem.core.master import BuildGameMaster
 from sartco.clem.core.outcomes import log_outcome
 from sartco.clem.core.parsing import parse_code
-from sartco.clem.core.transcript import MarkdownTranscript
-from sartco.games.instruct.paper import PAPER_EPISODE_FIELDS, PaperScorer, finish_paper, is_paper
+from sartco.games.instruct.paper import PAPER_EPISODE_FIELDS, finish_paper, is_paper
+from sartco.games.instruct.scorer import InstructScorer
 from sartco.clem.players.answers import instruct_answers
 from sartco.clem.players.sourced import Builder
 from sartco.episode import ATTEMPTS_KEY, InstructEpisode, PaperProtocolEpisode
 
 
-class CobotInstruct(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameMaster):
-    scorer_class = PaperScorer  # BuildScorer's scores, plus the paper's in a paper-protocol episode
+class CobotInstruct(BuildGameMaster):
+    scorer_class = InstructScorer  # BuildScorer's scores, plus the paper's in a paper-protocol episode
 
     def _on_setup(self, **instance):
         self.instance: InstructEpisode | PaperProtocolEpisode = instance
@@ -97,7 +97,7 @@ class CobotInstruct(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameMas
         log_outcome(self)
 
 
-class CobotInstructBenchmark(BuildBenchmark, GameBenchmark):
+class CobotInstructBenchmark(BuildBenchmark):
     master_class = CobotInstruct
     episode_fields = json_fields(InstructEpisode)
 

@@ -10,20 +10,15 @@ records our own build of the whole answer (sartco.clem.core.parsing on each answ
 once on a fresh board: ES, cell F1, error category; an answer without code is our parse_error,
 but the episode goes on). The episode succeeds when every turn's ES does.
 
-`PaperScorer` = BuildScorer's scores (ours) plus, for a paper episode, "Paper EM", "Paper CB",
-"Paper ES" (shares of the dialogue's turns, 0..1), the same per turn as round scores, and Main
-Score = 100 x Paper ES, and "Paper ES Leak-free": Paper ES with each answer run without the gold
-object function in front (regular cells; elsewhere it equals Paper ES). Probed cells
-(sartco.clem.core.probes) also get the function probes of our build's code.
+The scores of a paper episode are those of the game's scorer (scorer.InstructScorer).
 """
 from __future__ import annotations
 
-from sartco.clem.core.benchmark import json_fields
+from sartco.clem.core.instance_checks import json_fields
 from sartco.clem.core.building import build_answers, record_build
-from sartco.clem.core.outcomes import HarnessFault
-from sartco.clem.core.scoring import BuildScorer
+from sartco.clem.core.errors import HarnessFault
 from sartco.clem.core.transcript import code_block, text_block
-from sartco.episode import LEAK_FREE_ES, PAPER_KEY, PAPER_SCORES, PaperExperiment, PaperProtocolEpisode
+from sartco.episode import PAPER_KEY, PAPER_SCORES, PaperExperiment, PaperProtocolEpisode
 from sartco.paper import PROTOCOL
 from sartco.paper.table3 import generation, load_table3
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, ErrorCode
@@ -104,23 +99,3 @@ def check_turns(score) -> None:
     for turn in score.turns:
         if turn.category == ErrorCode.HARNESS_ERROR:
             raise HarnessFault(f"sandbox: {turn.message}")
-
-
-class PaperScorer(BuildScorer):
-    """BuildScorer's scores, plus the paper protocol's for an episode played in it."""
-
-    def compute_episode_scores(self, interactions: dict) -> None:
-        super().compute_episode_scores(interactions)
-        paper = interactions.get(PAPER_KEY)
-        if paper is None:
-            return
-        for key, name in PAPER_SCORES.items():
-            self.log_episode_score(name, float(paper[key]))
-            for turn in paper["turns"]:
-                self.log_round_score(turn["turn"], name, int(turn[key]))
-        if "es_leak_free" in paper:
-            self.log_episode_score(LEAK_FREE_ES, float(paper["es_leak_free"]))
-
-    def bench_score(self, interactions: dict, record) -> float:
-        paper = interactions.get(PAPER_KEY)
-        return super().bench_score(interactions, record) if paper is None else 100.0 * float(paper["es"])

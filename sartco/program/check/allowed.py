@@ -1,8 +1,9 @@
 """The subset of Python a program may use, as data: the builtins, the attribute names, the
 syntax node types (with the fields that hold their children) and why the others are refused.
 
-Allowed: every statement and expression of Python except async/await, match and try/except*
-(see WHAT for why); `with` too, whose context managers can only be the stand-ins that offer
+Allowed: every statement and expression of Python except async/await and try/except*
+(see WHAT for why; `match` with its value and class patterns read through the attribute rule:
+patterns.py); `with` too, whose context managers can only be the stand-ins that offer
 them (contextlib's suppress and nullcontext: a program's class cannot define `__enter__`), none
 of which swallows a budget stop; class statements as classes.py builds them; imports of the
 stand-in modules of modules.py only; any name except those starting with two underscores (but
@@ -23,7 +24,7 @@ from ..standins.modules import MEMBERS
 ALLOWED_BUILTINS = frozenset(
     "range zip enumerate len min max abs sum sorted reversed any all round divmod "
     "int str bool list tuple dict set frozenset float print isinstance issubclass map filter next iter "
-    "chr ord pow format repr ascii hex bin oct callable hash slice super property staticmethod classmethod "
+    "chr ord pow format repr ascii hex bin oct callable hash slice super property staticmethod classmethod type "
     "NotImplemented Ellipsis".split()
 ) | EXCEPTIONS
 PROVIDED = frozenset({"put", "init_board"})  # `board` is provided too, but may be rebound
@@ -54,10 +55,14 @@ FIELDS: dict[type, tuple[str, ...]] = {
     ast.comprehension: ("target", "iter", "ifs"),
     ast.arguments: ("posonlyargs", "args", "vararg", "kwonlyargs", "kw_defaults", "kwarg", "defaults"),
     ast.arg: ("annotation",), ast.keyword: ("value",),
+    # match: a value pattern's name and a class pattern's class are rewritten by their rules (nodes.py)
+    ast.Match: ("subject", "cases"), ast.match_case: ("pattern", "guard", "body"),
+    ast.MatchValue: (), ast.MatchSingleton: (), ast.MatchSequence: ("patterns",),
+    ast.MatchMapping: ("patterns",), ast.MatchClass: ("patterns", "kwd_patterns"), ast.MatchStar: (),
+    ast.MatchAs: ("pattern",), ast.MatchOr: ("patterns",),
 }
 WHAT = {
     ast.AsyncWith: "async with", ast.TryStar: "try/except*",
     ast.Await: "await",
     ast.AsyncFunctionDef: "async def", ast.AsyncFor: "async for",
-    ast.Match: "match (class patterns read attributes by name)",
 }

@@ -17,7 +17,8 @@ from .allowed import ALLOWED_BUILTINS, EXCEPTIONS, WHAT
 from ..standins.budget import Forbidden
 from ..standins.classes import FILENAME
 from ..standins.modules import MEMBERS
-from .nodes import PLAN, WRAPS, Walk, check_name, fail
+from .nodes import PLAN, WRAPS
+from .walk import Walk, check_name, fail
 
 __all__ = ["instrument", "prepare"]
 

@@ -18,62 +18,24 @@ spell, so a program can neither reach nor shadow them:
 - every `except` handler starts with `$caught(<the exception>)`, which raises budget stops and
   refusals again (a program catches its own errors, never the sandbox's);
 - every `finally` body starts with `$final()`, which remembers a RecursionError or MemoryError
-  passing through (a `return`, `break` or `continue` there would swallow it) as the program's stop.
+  passing through (a `return`, `break` or `continue` there would swallow it) as the program's stop;
+- a `match` value pattern's dotted name and a class pattern's class become attributes of
+  `$pattern` (matching.py).
+The checks of names and the walk's record are walk.py's.
 """
 from __future__ import annotations
 
 import ast
 
-from .allowed import ATTRIBUTES, DENIED, FIELDS, PROVIDED
-from ..standins.budget import Forbidden
-from ..standins.classes import DEFINABLE, READABLE, mangle_private
+from .allowed import FIELDS, PROVIDED
+from .matching import MATCH_RULES
+from .walk import check_attribute_name, check_name, fail, located
+from ..standins.classes import DATA, DEFINABLE, mangle_private
 from ..standins.formatting import LONG_NUMBER, SPEC_DIGITS
 from ..standins.modules import MEMBERS, refusal
 
 CHECKED_OPS = {ast.Add: "$add", ast.Mult: "$mul", ast.Pow: "$pow", ast.LShift: "$lshift", ast.Mod: "$mod"}
 INPLACE_OPS = {ast.Add: "$iadd", ast.Mult: "$imul", ast.Pow: "$ipow", ast.LShift: "$ilshift", ast.Mod: "$imod"}
-
-
-def fail(node, text: str):
-    line = getattr(node, "lineno", None)
-    exc = Forbidden(f"line {line}: {text}" if line else text)
-    exc.position = (line or 0, getattr(node, "col_offset", 0))
-    raise exc
-
-
-class Walk:
-    """What one walk has seen: names the program binds, builtins it reads that are not there."""
-
-    __slots__ = ("stored", "denied", "methods", "reads", "strings", "modules")
-
-    def __init__(self):
-        self.stored: set[str] = set()  # names bound, attributes stored
-        self.denied: dict[str, ast.AST] = {}
-        self.methods: set[int] = set()  # the defs and names of a class body that bind DEFINABLE dunders
-        self.reads: dict[str, ast.AST] = {}  # attributes read that the sandbox does not offer
-        self.strings: list[str] = []  # the string constants (their words may name namedtuple fields)
-        self.modules: dict[str, str] = {}  # name bound by an import -> module
-
-
-def check_name(node, name: str, store: bool, walk: Walk):
-    if name[0] == "$":  # ours: no Python source can spell it
-        return
-    if name[0] == "_" and name[:2] == "__" and (id(node) not in walk.methods if store else name not in DEFINABLE and name != "__name__"):
-        fail(node, f"names starting with two underscores reach the interpreter: {name}")
-    if store:
-        if name in PROVIDED:
-            fail(node, f"{name} is the task's world and cannot be redefined")
-        walk.stored.add(name)
-    elif name in DENIED and name not in walk.denied:
-        walk.denied[name] = node  # refused at the end unless the program binds the name itself
-
-
-def _loc(new, old):
-    new.lineno = old.lineno
-    new.col_offset = old.col_offset
-    new.end_lineno = old.end_lineno
-    new.end_col_offset = old.end_col_offset
-    return new
 
 
 _LOAD = ast.Load()
@@ -86,7 +48,7 @@ def _call(helper: str, args: list, old) -> ast.Call:
 
 
 def _tick(old) -> ast.Expr:
-    return _loc(ast.Expr(_call("$t", [], old)), old)
+    return located(ast.Expr(_call("$t", [], old)), old)
 
 
 # --- rules: checks (and in-place instrumentation) of a node itself ---------------------------
@@ -110,7 +72,7 @@ def _r_class(n, walk):
     """A class statement (classes.py builds it): no keywords, `object` as a base is implied,
     and its defs and assignments (`__rmul__ = __mul__`) may bind DEFINABLE dunders (read anywhere)."""
     check_name(n, n.name, True, walk)
-    if n.keywords:
+    if n.keywords and [k.arg for k in n.keywords] != ["metaclass"]:  # metaclass=: only abc's ABCMeta (records.py)
         fail(n, f"class {n.name}: class keywords (metaclass=...) are not allowed (a metaclass reaches the interpreter)")
     n.bases = [b for b in n.bases if not (type(b) is ast.Name and b.id == "object" and "object" not in walk.stored)]
     for statement in n.body:
@@ -119,8 +81,9 @@ def _r_class(n, walk):
         elif type(statement) is ast.FunctionDef and statement.name in PROVIDED:  # a method `put`: the
             walk.methods.add(id(statement))  # class's name, not the program's (`robot.put(...)`)
             walk.stored.add(statement.name)
-        elif type(statement) is ast.Assign:  # `__rmul__ = __mul__`
-            walk.methods.update(id(t) for t in statement.targets if type(t) is ast.Name and t.id in DEFINABLE)
+        elif type(statement) is ast.Assign:  # `__rmul__ = __mul__`, `__slots__ = ("x", "y")`
+            walk.methods.update(id(t) for t in statement.targets
+                                if type(t) is ast.Name and (t.id in DEFINABLE or t.id in DATA))
     mangle_private(n)
 
 
@@ -129,7 +92,7 @@ def _r_loop(n, walk):
 
 
 def _r_lambda(n, walk):
-    n.body = _loc(ast.BoolOp(ast.And(), [_call("$t", [], n.body), n.body]), n.body)
+    n.body = located(ast.BoolOp(ast.And(), [_call("$t", [], n.body), n.body]), n.body)
 
 
 def _r_comprehension(n, walk):
@@ -149,7 +112,7 @@ def _r_formatted(n, walk):
         for part in parts:
             if LONG_NUMBER.search(str(part.value)):
                 fail(n, f"f-string format widths and precisions above {'9' * SPEC_DIGITS} are not allowed")
-    n.value = _call("$fstr", [n.value, _loc(ast.Constant(n.conversion), n), spec], n)
+    n.value = _call("$fstr", [n.value, located(ast.Constant(n.conversion), n), spec], n)
     n.conversion, n.format_spec = -1, None
 
 
@@ -160,14 +123,14 @@ def _r_handler(n, walk):
         n.name = "$e"
     else:
         check_name(n, n.name, True, walk)
-    n.body.insert(0, _loc(ast.Expr(_call("$caught", [_loc(ast.Name(n.name, _LOAD), n)], n)), n.body[0]))
+    n.body.insert(0, located(ast.Expr(_call("$caught", [located(ast.Name(n.name, _LOAD), n)], n)), n.body[0]))
 
 
 def _r_try(n, walk):
     """A `finally` body first calls $final, which remembers a depth or memory stop passing through:
     a `return`, `break` or `continue` in the body would end it, and the stop must stay the verdict."""
     if n.finalbody:
-        n.finalbody.insert(0, _loc(ast.Expr(_call("$final", [], n.finalbody[0])), n.finalbody[0]))
+        n.finalbody.insert(0, located(ast.Expr(_call("$final", [], n.finalbody[0])), n.finalbody[0]))
 
 
 def _r_scope(n, walk):  # global, nonlocal
@@ -202,6 +165,7 @@ RULES = {
     ast.For: _r_loop, ast.While: _r_loop, ast.Lambda: _r_lambda, ast.comprehension: _r_comprehension,
     ast.FormattedValue: _r_formatted, ast.ExceptHandler: _r_handler, ast.Try: _r_try, ast.Global: _r_scope, ast.Nonlocal: _r_scope,
     ast.Import: _r_import, ast.ImportFrom: _r_import_from, ast.ClassDef: _r_class,
+    **MATCH_RULES,
 }
 
 
@@ -209,18 +173,12 @@ RULES = {
 
 def _w_attribute(n, wrapped, walk):
     """attributes.py's rule, before running: reads become $attr(x, 'm'), stores (and dels)
-    $fields(x, 'm')['m']; a name the sandbox does not offer must be one the program defines
-    (checked at the end of the walk: instrument.py)."""
-    name = n.attr
-    if name[:2] == "__" and ((name not in DEFINABLE and name not in READABLE) or type(n.ctx) is not ast.Load):
-        fail(n, f"attributes starting with two underscores reach the interpreter: .{name}")
-    key = _loc(ast.Constant(name), n)
+    $fields(x, 'm')['m'] (_check_attribute_name first)."""
+    check_attribute_name(n, walk)
+    key = located(ast.Constant(n.attr), n)
     wrapped.add(id(key))  # ours: not one of the program's strings (Walk.strings)
     if type(n.ctx) is not ast.Load:
-        walk.stored.add(name)
-        return _loc(ast.Subscript(_call("$fields", [n.value, key], n), key, n.ctx), n)
-    if name not in ATTRIBUTES and name[:2] != "__" and (name not in walk.reads or type(n.value) is ast.Name):
-        walk.reads[name] = n  # (a module's name as the owner makes the clearer message)
+        return located(ast.Subscript(_call("$fields", [n.value, key], n), key, n.ctx), n)
     return _call("$attr", [n.value, key], n)
 
 
@@ -249,15 +207,15 @@ def _w_augassign(n, wrapped, walk):
     if helper is None or (op is ast.Add and _small_number(n.value)):
         return n
     if type(target) is ast.Name:
-        load = _loc(ast.Name(target.id, ast.Load()), target)
-        return _loc(ast.Assign([target], _call(helper, [load, n.value], n)), n)
+        load = located(ast.Name(target.id, ast.Load()), target)
+        return located(ast.Assign([target], _call(helper, [load, n.value], n)), n)
     if type(target) is ast.Subscript:
         key = target.slice
         if type(key) is ast.Slice:
-            none = _loc(ast.Constant(None), key)
+            none = located(ast.Constant(None), key)
             key = _call("$slice", [key.lower or none, key.upper or none, key.step or none], key)
-        args = [target.value, key, _loc(ast.Name(helper, ast.Load()), n), n.value]
-        return _loc(ast.Expr(_call("$iitem", args, n)), n)
+        args = [target.value, key, located(ast.Name(helper, ast.Load()), n), n.value]
+        return located(ast.Expr(_call("$iitem", args, n)), n)
     fail(n, "augmented assignment to this target is not allowed")
 
 
@@ -290,7 +248,7 @@ def _is_list_field(t: type, field: str) -> bool:
     return field in {
         "body", "targets", "orelse", "values", "elts", "keys", "generators", "comparators",
         "keywords", "ifs", "posonlyargs", "kwonlyargs", "kw_defaults", "defaults", "handlers", "finalbody",
-        "decorator_list", "bases", "items",
+        "decorator_list", "bases", "items", "cases", "patterns", "kwd_patterns",
     } or (field == "args" and t in (ast.Call, ast.arguments))
 
 

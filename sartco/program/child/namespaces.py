@@ -1,4 +1,5 @@
-"""The paper protocol's namespace: a program runs as the authors' scorer ran it.
+"""The paper protocol's namespace: a program runs as the authors' scorer ran it (and our
+protocol's `__main__`: script()).
 
 The authors called `exec(code)` inside `_execute_instructions(instruction, board)`, a function of
 their scorer module (../shared/sartco-data/paper-protocol/README.md, "How the authors ran a
@@ -56,6 +57,21 @@ class _RefusedFunction:
 
 SCORER = sys.modules.setdefault(MODULE_NAME, types.ModuleType(MODULE_NAME, "the paper protocol's namespace"))
 _RE = {name: _RefusedFunction(f"re.{name}") for name in _re.__all__ if name.islower()}
+
+
+class _Script:
+    """A script's module as sys.modules["__main__"] holds it: its names are the program's globals."""
+
+
+def script(env: dict[str, Any]) -> tuple[dict[str, Any], dict[str, Any]]:
+    """(globals, locals) of our protocol: one module namespace, `__main__` in sys.modules as a
+    script's is (in the program's process only), so that dataclasses reads a string annotation
+    (`from __future__ import annotations`: `x: ClassVar[int]`, `_: KW_ONLY`) in the program's
+    names, as under plain exec."""
+    main = _Script()
+    main.__dict__ = env
+    sys.modules["__main__"] = main  # type: ignore[assignment]
+    return env, env
 
 
 def paper(env: dict[str, Any], source: str) -> tuple[dict[str, Any], dict[str, Any]]:

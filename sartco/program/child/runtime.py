@@ -42,9 +42,10 @@ from ..standins.budget import Forbidden, Limit
 from ..execution import MODULE, PAPER, clean, not_a_str
 from ..check.instrument import prepare
 from ..standins import attributes, chance
-from ..standins.classes import SERIALS, program_hash
+from ..standins.classes import SERIALS, program_hash, type_of
 from ..standins.records import build_class
 from ..standins.modules import forget_typing, import_module, load
+from ..standins.patterns import PATTERNS
 from .result import checked
 
 MESSAGE_CHARS = 400
@@ -87,7 +88,7 @@ _OWN = {  # builtins of ours (with budgets); the rest of ALLOWED_BUILTINS are Py
     "range": budget.checked_range, "round": budget.checked_round, "sum": budget.checked_sum,
     "print": budget.no_print, "int": conversions.INT, "str": conversions.STR, "pow": budget.power,
     "format": formatting.format_value, "repr": conversions.to_repr, "ascii": conversions.to_ascii,
-    "hash": program_hash,
+    "type": type_of, "hash": program_hash,
 }
 BUILTINS = {
     **{name: _Refused(name) for name in DENIED},
@@ -98,7 +99,7 @@ BUILTINS = {
     "$iadd": budget.iadd, "$imul": budget.imul, "$ipow": budget.power, "$ilshift": budget.lshift,
     "$imod": formatting.mod, "$iitem": budget.iitem, "$slice": slice, "$len": budget.checked_len,
     "$attr": attributes.read, "$fields": attributes.fields, "$caught": _caught, "$final": _final,
-    "$fstr": formatting.fstring_field,
+    "$fstr": formatting.fstring_field, "$pattern": PATTERNS,
 }
 
 # --- compile ------------------------------------------------------------------------------------
@@ -193,9 +194,8 @@ def namespace(board, init_board, name: str = "__main__") -> dict:
             "np": NUMPY[0] if RAN[0] == 1 else load("numpy")}
 
 
-# programs this process ran (_run counts): a child's first uses the template's np and typing's
-# caches as the template emptied them (making them afresh costs page faults); the gold programs
-# sharing a child (template.py, mode "gold") after the first make their own
+# programs this process ran (_run counts): a child's first uses the template's np and typing's caches
+# as the template emptied them (afresh costs page faults); in a shared child (batch.py) the rest make their own
 RAN = [0]
 NUMPY = [load("numpy")]
 
@@ -255,7 +255,7 @@ def _run(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE,
     BUILTINS["$t"] = steps.__next__  # no program can reach the dict: one serves them all
     RAN[0] += 1
     env = namespace(board, init_board)
-    env, scope = namespaces.paper(env, source) if semantics == PAPER else (env, env)
+    env, scope = namespaces.paper(env, source) if semantics == PAPER else namespaces.script(env)
     if RAN[0] > 1:
         forget_typing()  # typing's caches start empty: nothing of an earlier program is in them
     old_limit = sys.getrecursionlimit()

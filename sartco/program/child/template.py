@@ -5,8 +5,8 @@ one answer's probes, mode "answer", or the harness's gold programs of a batch, "
 
 Protocol with the parent (driver.py), lines of bytes:
   parent -> template, once at start: the seccomp filter, a BPF program in base64 (confine.py)
-  template -> parent, once at start: "ready", or "unconfined: <why>" (then it exits: the kernel's
-      walls cannot be built here, and no program runs unconfined)
+  template -> parent, once at start: '"ready" {"pid": its pid outside, "walls": [[namespace, up, why]]}',
+      or "unconfined: <why>" (then it exits: the walls cannot be built here; no program runs unconfined)
   parent -> template, per chunk: a header {"limits": [...Limits fields...], "rows": R, "cols": C,
       "semantics": "module" | "paper", "items": K, "mode": "code" | "gold" | "answer" | "breach"}, then K
       lines, each a program as the parent compiled it (runtime.answer_item; "breach": a JSON string)
@@ -57,21 +57,10 @@ OUT_OF_MEMORY = 3  # a child's exit status after a MemoryError outside the progr
 FAILED = 4  # a child's exit status when its own code failed after the walls were up
 CONFINED = b"C"  # the first byte of every answer: written by the child once its walls are up
 ANSWER_BYTES = 4 << 20  # the most a child may write (a 64 x 64 board's full log is under 1 MiB)
-PR_SET_PDEATHSIG = 1
 MAX_FD = 1 << 16
 # modules that Python imports lazily while it compiles or runs a program (a confined child can
 # open no file, so none can be imported there): the parser's NFKC of non-ASCII names (PEP 3131)
 PRELOAD = ("unicodedata",)
-
-
-def _die_with_parent(parent: int) -> None:
-    """SIGKILL when the thread that started this process (driver.py's spawner) ends."""
-    try:
-        ctypes.CDLL(None, use_errno=True).prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
-    except (OSError, AttributeError):  # not Linux: the stdin pipe still ends the template
-        pass
-    if parent and os.getppid() != parent:  # the parent died before prctl
-        os._exit(0)
 
 
 def _vm_bytes() -> int:
@@ -271,44 +260,22 @@ class Template:
                 out.flush()
 
 
-ADDR_NO_RANDOMIZE = 0x0040000  # personality(2)
+def main(parent: int = 0, breach: bool = False, namespaces: bool = True) -> int:
+    """The template's life: its namespaces (isolation.py), the seccomp filter (stdin's first line,
+    BPF in base64), chunks of programs (the module docstring); "ready" names the namespaces up."""
+    from . import confine, isolation
 
-
-def _fixed_layout() -> None:
-    """Run the template (and so its children) with the address space laid out alike in every
-    start: ASLR off for it alone (personality(2), then exec again). Python hashes functions,
-    None (3.11), NaN, exceptions, ... by their address, which then no longer differs between
-    templates of one machine and build (docs/sandbox.md says what it covers). Where the kernel
-    refuses the flag, the template runs as it is."""
-    try:
-        personality = ctypes.CDLL(None, use_errno=True).personality
-    except (OSError, AttributeError):
-        return
-    current = personality(0xFFFFFFFF)
-    if current == -1 or current & ADDR_NO_RANDOMIZE or personality(current | ADDR_NO_RANDOMIZE) == -1:
-        return
-    try:
-        os.execv(sys.executable, sys.orig_argv)
-    except OSError:  # the flag is inherited by nothing then: run on as we are
-        personality(current)
-
-
-def main(parent: int = 0, breach: bool = False) -> int:
-    """The template's life: the first line of stdin is the seccomp filter (BPF, base64), then
-    chunks of programs (see the module docstring)."""
-    from .confine import Unconfinable
-
-    _fixed_layout()
-    _die_with_parent(parent)
+    isolation.fixed_layout()
+    isolation.die_with_parent(parent)
+    refused = isolation.enter_namespaces() if namespaces else "not asked for (a template without namespaces)"
     inp, out = sys.stdin.buffer, sys.stdout.buffer
     try:
         template = Template(base64.b64decode(inp.readline()), breach)
-    except Unconfinable as exc:
+        pid, walls = isolation.finish(refused)
+    except (confine.Unconfinable, OSError) as exc:
         out.write(b"unconfined: " + str(exc).encode("ascii", "backslashreplace") + b"\n")
         out.flush()
         return 0
-    out.write(b'"ready"\n')
+    out.write(b'"ready" ' + json.dumps({"pid": pid, "walls": walls}).encode() + b"\n")
     out.flush()
     return template.serve(inp, out)
-
-

@@ -46,6 +46,11 @@ class SeededRandom(_random.Random):
 
 
 SeededRandom.__module__, SeededRandom.__name__, SeededRandom.__qualname__ = "random", "Random", "Random"
+
+# Python 3.13 imports sha512 at the first string seed (random.seed('abc')), which a confined
+# child cannot do (it opens no file): seeding one here, in the template, imports it before any child
+_random.Random("sha512")
+
 SHARED = [None]  # the current program's generator, behind the module's functions (made at first use)
 
 

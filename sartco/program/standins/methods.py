@@ -22,10 +22,11 @@ _STR = frozenset({
     "rfind", "index", "rindex", "count", "format", "format_map", "center", "ljust", "rjust", "zfill",
     "isdigit", "isalpha", "isalnum", "isspace", "isupper", "islower", "isnumeric", "isdecimal", "istitle",
     "removeprefix", "removesuffix"})
-TYPE_METHODS = {  # the methods a program may call, per type (checked again at run time)
+TYPE_METHODS: dict[type, frozenset[str]] = {  # the methods a program may call, per type (checked again at run time)
     list: _LIST, dict: _DICT, str: _STR, set: _SET, frozenset: _FROZEN,
     tuple: frozenset({"index", "count"}),
-    collections.defaultdict: _DICT, collections.OrderedDict: _DICT,
+    collections.defaultdict: _DICT, collections.OrderedDict: _DICT | {"move_to_end"},
+    collections.ChainMap: _DICT | {"new_child", "parents", "maps"},
     collections.Counter: _DICT | {"most_common", "elements", "subtract", "total"},
     collections.deque: frozenset({"append", "appendleft", "pop", "popleft", "extend", "extendleft", "rotate",
                                   "index", "count", "remove", "reverse", "copy", "clear", "insert"}),

@@ -25,19 +25,23 @@ MemoryError: budget.STOPS) and `nullcontext`, the only context managers a `with`
 """
 from __future__ import annotations
 
+import bisect
 import collections
+import collections.abc
 import contextlib
 import copy
 import functools
+import heapq
 import itertools
 import math
 import operator
 import string
+import textwrap
 import typing
 from collections.abc import Callable
 from typing import Any
 
-from . import budget, chance, formatting, named, numpy_members, records
+from . import budget, chance, enums, formatting, named, numpy_members, records
 from .attributes import own_function
 from .budget import STOPS, Forbidden, too_big
 from .classes import ProgramClass, serial_hash
@@ -176,7 +180,9 @@ def forget_typing() -> None:
 
 
 _TYPING = ("Any", "Callable", "Dict", "FrozenSet", "Iterable", "Iterator", "List", "Literal", "Mapping",
-           "Optional", "Sequence", "Set", "Tuple", "Union", "TypeVar", "Generator", "Deque", "DefaultDict")
+           "Optional", "Sequence", "Set", "Tuple", "Union", "TypeVar", "Generator", "Deque", "DefaultDict",
+           "ClassVar", "Final", "TypedDict", "Hashable", "Sized", "Collection", "MutableMapping",
+           "MutableSequence", "Type", "NoReturn", "Counter", "OrderedDict", "ChainMap", "Reversible")
 _MATH = ("pi", "e", "tau", "inf", "nan", "sqrt", "isqrt", "floor", "ceil", "trunc", "fabs", "gcd", "log",
          "log2", "log10", "exp", "sin", "cos", "tan", "asin", "acos", "atan", "atan2", "hypot", "degrees",
          "radians", "copysign", "fmod", "modf", "isclose", "isfinite", "isinf", "isnan", "dist", "fsum", "pow")
@@ -185,6 +191,11 @@ _ITERTOOLS = ("product", "permutations", "combinations", "combinations_with_repl
               "dropwhile", "compress", "pairwise", "filterfalse")
 _OPERATOR = ("sub", "truediv", "floordiv", "neg", "pos", "eq", "ne", "lt", "le", "gt", "ge", "not_", "and_",
              "or_", "xor", "itemgetter", "truth", "abs", "index")
+_HEAPQ = ("heappush", "heappop", "heapify", "heapreplace", "heappushpop", "merge", "nlargest", "nsmallest")
+_BISECT = ("bisect", "bisect_left", "bisect_right", "insort", "insort_left", "insort_right")
+_ABCS = ("Iterable", "Iterator", "Generator", "Sequence", "MutableSequence", "Mapping", "MutableMapping", "Set",
+         "MutableSet", "Callable", "Hashable", "Sized", "Container", "Collection", "Reversible")
+_COLLECTIONS_ABC = Module("collections.abc", {n: getattr(collections.abc, n) for n in _ABCS})  # for annotations
 _STRING = ("ascii_letters", "ascii_lowercase", "ascii_uppercase", "digits", "hexdigits", "octdigits",
            "punctuation", "whitespace", "printable")
 
@@ -193,10 +204,19 @@ _FACTORIES = {
                      "perm": perm, "prod": prod, "lcm": lcm},
     "itertools": lambda: {n: getattr(itertools, n) for n in _ITERTOOLS},
     "functools": lambda: {"wraps": wraps, "update_wrapper": update_wrapper, "total_ordering": total_ordering, "reduce": functools.reduce, "partial": functools.partial, "cache": functools.cache,
-                          "lru_cache": functools.lru_cache, "cmp_to_key": functools.cmp_to_key},
-    "typing": lambda: {**{n: getattr(typing, n) for n in _TYPING}, "NamedTuple": records.NamedTuple},
+                          "lru_cache": functools.lru_cache, "cmp_to_key": functools.cmp_to_key,
+                          "cached_property": functools.cached_property},
+    "typing": lambda: {**{n: getattr(typing, n) for n in _TYPING}, "NamedTuple": records.NamedTuple,
+                       "Generic": records.Generic, "Protocol": records.Protocol},
     "collections": lambda: {"namedtuple": records.namedtuple, "defaultdict": collections.defaultdict, "Counter": collections.Counter,
-                            "deque": collections.deque, "OrderedDict": collections.OrderedDict},
+                            "deque": collections.deque, "OrderedDict": collections.OrderedDict,
+                            "ChainMap": collections.ChainMap, "abc": _COLLECTIONS_ABC},
+    "collections.abc": lambda: dict(vars(_COLLECTIONS_ABC)),
+    "textwrap": lambda: {"dedent": textwrap.dedent},  # (its other functions use regular expressions)
+    "heapq": lambda: {n: getattr(heapq, n) for n in _HEAPQ},
+    "bisect": lambda: {n: getattr(bisect, n) for n in _BISECT},
+    "enum": lambda: dict(enums.MEMBERS["enum"]),
+    "abc": lambda: dict(enums.MEMBERS["abc"]),
     "copy": lambda: {"copy": shallow_copy, "deepcopy": deep_copy},
     "contextlib": lambda: {"suppress": suppress, "nullcontext": contextlib.nullcontext},
     "operator": lambda: {**{n: getattr(operator, n) for n in _OPERATOR}, "add": budget.add, "mul": budget.mul,
@@ -241,5 +261,5 @@ def import_module(name, globals=None, locals=None, fromlist=(), level=0):
     """The `__import__` of a program's import statements (instrument.py refused every other name)."""
     if level != 0 or name not in _MEMBERS_CACHE:
         raise Forbidden(refusal(name))
-    return load(name)
+    return load(name if fromlist else name.partition(".")[0])  # `import collections.abc` binds collections
 

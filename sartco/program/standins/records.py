@@ -1,4 +1,5 @@
-"""Records a program may define: `@dataclass`, `collections.namedtuple` and `typing.NamedTuple`.
+"""Records a program may define: `@dataclass`, `collections.namedtuple` and `typing.NamedTuple`
+(and `typing.TypedDict`); and build_class, which every class statement calls.
 
 All three make classes of the program (classes.ProgramClass), with what the standard library
 makes of them: dataclasses' own `__init__`/`__repr__`/`__eq__` (and order, frozen), the
@@ -14,9 +15,13 @@ from __future__ import annotations
 import builtins
 import collections
 import dataclasses
+import types
+import typing
 
 from .budget import Forbidden
-from .classes import EXCEPTION_TYPES, ProgramClass, make, serial_hash
+from .classes import EXCEPTION_TYPES, ProgramClass, ProgramEnumType, make, serial_hash
+from .conversions import INT, STR
+from .enums import ABC_META
 
 _OPTIONS = frozenset({"init", "repr", "eq", "order", "unsafe_hash", "frozen", "kw_only", "match_args", "slots"})
 
@@ -69,22 +74,51 @@ def _capture(name, bases, namespace):
     return namespace
 
 
+def _generic(cls: type, params: object) -> types.GenericAlias:
+    """`Queue[int]` of a class deriving from typing's Generic or Protocol: an alias, as typing's."""
+    return types.GenericAlias(cls, params)
+
+
+def _typing_base(name: str) -> ProgramClass:
+    """typing's Generic and Protocol as bases of the program's classes (they only annotate)."""
+    return ProgramClass(name, (), {"__slots__": (), "__module__": "typing", "__qualname__": name,
+                                   "__class_getitem__": classmethod(_generic)})
+
+
+Generic, Protocol = _typing_base("Generic"), _typing_base("Protocol")
+MIXINS = {STR: str, INT: int, float: float}  # the data types an enum may mix in (`class Shape(str, Enum)`)
+
+
 def build_class(body, name, *bases, **keywords):
     """The `__build_class__` of a program's class statements (classes.py says what it allows)."""
-    if keywords:
+    abstract = keywords == {"metaclass": ABC_META}  # made as ABCMeta makes it (enums.py)
+    if keywords and not abstract:
         raise Forbidden(f"class {name}: class keywords ({', '.join(keywords)}) are not allowed "
                         f"(a metaclass reaches the interpreter)")
+    # `Generic[T]`, `Protocol[T]`, `Queue[int]` as a base: the class they alias
+    bases = tuple(base.__origin__ if type(base) is types.GenericAlias and type(base.__origin__) is ProgramClass
+                  else base for base in bases)
+    if any(type(base) is ProgramEnumType for base in bases) and not abstract:
+        mixed = tuple(MIXINS.get(base, base) for base in bases)
+        for base in mixed:
+            if type(base) is not ProgramEnumType and base not in MIXINS.values():
+                raise Forbidden(f"class {name}: an enum may derive only from enum's classes, the program's enums "
+                                f"and str, int or float, not from {base!r:.60}")
+        return builtins.__build_class__(body, name, *mixed, metaclass=ProgramEnumType)
     for base in bases:
-        if base is NamedTuple:
+        if base is NamedTuple or base is typing.TypedDict:
             if len(bases) > 1:
-                raise Forbidden(f"class {name}: a NamedTuple has no other base")
+                raise Forbidden(f"class {name}: a {'NamedTuple' if base is NamedTuple else 'TypedDict'} has no other base")
         elif type(base) is not ProgramClass and base not in EXCEPTION_TYPES:
             raise Forbidden(f"class {name}: a class may derive only from the program's own classes, the "
-                            f"exception classes and typing.NamedTuple, not from {base!r:.60}")
+                            f"exception classes, enum's, typing's NamedTuple, TypedDict, Generic and Protocol "
+                            f"and abc.ABC, not from {base!r:.60}")
     namespace = builtins.__build_class__(body, name, metaclass=_capture)
     if bases and bases[0] is NamedTuple:
         return named_record(name, namespace)
-    return make(name, bases, namespace)
+    if bases and bases[0] is typing.TypedDict:  # typing makes it: a dict's type, only annotations
+        return typing.TypedDict(name, namespace.get("__annotations__", {}))
+    return make(name, bases, namespace, abstract)
 
 
 MEMBERS = {

@@ -1,0 +1,7 @@
+msg = "{shape}-{color}".format(shape="washer", color="red")
+shape, color = msg.split("-")
+put(board, shape, color, 0, 0)
+row = "%s:%d" % ("nut", 3)
+name, y = row.split(":")
+put(board, name, "blue", 1, int(y))
+put(board, "washer", "{:s}".format("green"), int("{:d}".format(5)), 5)
