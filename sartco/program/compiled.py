@@ -28,6 +28,8 @@ import marshal
 import sys
 import threading
 import time
+from types import CodeType, FrameType
+from typing import Any
 
 from .execution import Execution, Limits
 
@@ -37,13 +39,14 @@ REMAINING = 990
 
 
 def _depth() -> int:
-    frame, n = sys._getframe(), 0
+    frame: FrameType | None = sys._getframe()
+    n = 0
     while frame is not None:
         frame, n = frame.f_back, n + 1
     return n
 
 
-def _at_headroom(source: str, limits: Limits, thread: bool = False) -> tuple:
+def _at_headroom(source: str, limits: Limits, thread: bool = False) -> tuple[Any, Any, str]:
     """runtime.compile_program(source, limits) with REMAINING frames of headroom: deeper calls
     pad the stack up to it, a caller already deeper runs it in a fresh thread."""
     from .child.runtime import compile_program
@@ -53,8 +56,9 @@ def _at_headroom(source: str, limits: Limits, thread: bool = False) -> tuple:
     if depth < target:
         return _at_headroom(source, limits, thread)
     if depth == target or thread:
-        return compile_program(source, limits)
-    out: list = []
+        compiled: tuple[Any, Any, str] = compile_program(source, limits)
+        return compiled
+    out: list[tuple[Any, Any, str]] = []
     fresh = threading.Thread(target=lambda: out.append(_at_headroom(source, limits, True)), daemon=True)
     fresh.start()
     fresh.join()
@@ -80,7 +84,7 @@ def prepare(source: str, limits: Limits) -> bytes | Execution:
     return base64.b64encode(marshal.dumps((code, source)))
 
 
-def _frozensets(code) -> bool:
+def _frozensets(code: CodeType) -> bool:
     """Whether the code (or a function in it) has a frozenset constant."""
     return any(type(const) is frozenset or (hasattr(const, "co_consts") and _frozensets(const))
                for const in code.co_consts)

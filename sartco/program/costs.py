@@ -26,6 +26,8 @@ import statistics
 import subprocess
 import sys
 import time
+from collections.abc import Callable
+from typing import BinaryIO
 
 from sartco.settings import IMPORT_ROOT
 
@@ -69,7 +71,7 @@ def floor(n: int, core: int = 0) -> tuple[float, float, int]:
     return float(wall), float(cpu), int(faults)
 
 
-def stage(name: str, inp, out) -> int:
+def stage(name: str, inp: BinaryIO, out: BinaryIO) -> int:
     """In a stage process, as a template reads and answers: the filter (a line of base64), then a
     line per program (JSON [source, item]); writes the answer of each (stage "program": base64;
     the others: an empty line), then the CPU ms and page faults per program (JSON)."""
@@ -81,14 +83,14 @@ def stage(name: str, inp, out) -> int:
     runtime, limits = template.runtime, Limits()
     fork = template._fork
 
-    def bare(source, item):
+    def bare(source: str, item: bytes) -> bytes:
         pid = fork()
         if pid == 0:
             os._exit(0)
         os.waitpid(pid, 0)
         return b""
 
-    run = {
+    run: Callable[[str, bytes], bytes] = {
         "template": bare,
         "walls": lambda source, item: template.fork(lambda: b"", limits)[2],
         "program": lambda source, item: template.fork(
@@ -119,10 +121,10 @@ def breakdown(sources: list[str], rounds: int = 3, core: int = 0) -> dict[str, f
 
     limits = Limits()
     items = [compiled.prepare(s, limits) for s in sources]
-    keep = [k for k, item in enumerate(items) if type(item) is bytes]  # the programs that run
-    sources = [sources[k] for k in keep]
+    kept = [(s, item) for s, item in zip(sources, items) if type(item) is bytes]  # the programs that run
+    sources = [s for s, _ in kept]
     job = base64.b64encode(compile_filter()) + b"\n" + b"".join(
-        json.dumps([sources[n], items[k].decode()]).encode() + b"\n" for n, k in enumerate(keep))
+        json.dumps([s, item.decode()]).encode() + b"\n" for s, item in kept if type(item) is bytes)
     env = {k: v for k, v in os.environ.items() if not k.startswith("PYTHON")} | {"PYTHONHASHSEED": HASH_SEED}
     seen: dict[str, list[float]] = {name: [] for name in (*STAGES, *(f"{s} faults" for s in STAGES),
                                                           "parent: compile", "parent: verdict")}

@@ -99,7 +99,7 @@ class LocalSandbox:
                         template.kill()
 
     def dispatch(self, items: list[bytes], rows: int, cols: int, limits: Limits, workers: int | None = None,
-                 semantics: str = MODULE, mode: str = "code", groups: list | None = None) -> list[Execution]:
+                 semantics: str = MODULE, mode: str = "code", groups: list[object] | None = None) -> list[Execution]:
         """Run items (compiled.prepare's) on the templates; Executions in input order. `groups`
         (mode ANSWER): one label per item; consecutive items of one label go to one template, in
         one chunk of their own."""
@@ -137,7 +137,7 @@ class LocalSandbox:
 
     def execute_many(self, programs, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, limits: Limits | None = None,
                      *, workers: int | None = None, cache: bool = True, semantics: str = MODULE,
-                     mode: str = "code", answers: list | None = None) -> list[Execution]:
+                     mode: str = "code", answers: list[object] | None = None) -> list[Execution]:
         """Run many programs, each in its own confined process on its own fresh board; results in
         input order. `semantics`: MODULE (a script's namespace) or PAPER (the authors' exec, see
         namespaces.py). `mode` GOLD: the harness's own reference programs (an instance's gold

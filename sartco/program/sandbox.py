@@ -63,7 +63,7 @@ def execute(code: str, rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, limit
 
 def execute_many(programs: Iterable[str], rows: int = DEFAULT_ROWS, cols: int = DEFAULT_COLS, limits: Limits | None = None, *,
                  workers: int | None = None, cache: bool = True, semantics: str = MODULE,
-                 gold: bool = False, answers: list | None = None) -> list[Execution]:
+                 gold: bool = False, answers: list[object] | None = None) -> list[Execution]:
     """Run many programs in the sandbox in use, results in input order. `workers`, `cache`,
     `gold` (the programs are the harness's own reference code, never a model's: pool.GOLD) and
     `answers` (a label per program: the model answer it is part of; one answer's programs may

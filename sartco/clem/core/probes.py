@@ -213,7 +213,9 @@ def run_probes_many(jobs: list[tuple[dict, str, GoldDraws]]) -> list[dict | Harn
     size, in input order; an answer whose probe the sandbox failed gets its HarnessFault."""
     from .sandbox import judge, run_many
 
-    plans, batches, labels = [], {}, {}
+    plans: list[tuple[str | None, int, int]] = []
+    batches: dict[tuple[int, int], list[str]] = {}
+    labels: dict[tuple[int, int], list[int]] = {}
     for job, (instance, code, gold) in enumerate(jobs):
         given, rows, cols = instance["given_code"], instance["rows"], instance["cols"]
         name = probed_function(code, given)

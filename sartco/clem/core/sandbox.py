@@ -12,7 +12,7 @@ __all__ = ["run_many", "judge", "restart"]
 
 
 def run_many(programs: list[str], rows: int, cols: int, *, gold: bool = False,
-             answers: list | None = None) -> list[Execution]:
+             answers: list[object] | None = None) -> list[Execution]:
     """Each program on its own fresh rows x cols board, results in input order. `gold`: the
     programs are an instance's gold code at the probes' candidate arguments, never a model's (the
     local sandbox runs a batch of them in one confined child: sartco.program.child.template, mode "gold").

@@ -32,6 +32,7 @@ import marshal
 import sys
 from itertools import repeat
 from operator import length_hint
+from typing import Any
 
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, Board, ErrorCode, WorldError, put
 
@@ -39,7 +40,7 @@ from ..standins import budget, conversions, formatting
 from . import namespaces
 from ..check.allowed import ALLOWED_BUILTINS, DENIED
 from ..standins.budget import Forbidden, Limit
-from ..execution import MODULE, PAPER, clean, not_a_str
+from ..execution import MODULE, PAPER, Limits, clean, not_a_str
 from ..check.instrument import prepare
 from ..standins import attributes, chance
 from ..standins.classes import SERIALS, program_hash, type_of
@@ -196,8 +197,7 @@ def namespace(board, init_board, name: str = "__main__") -> dict:
 
 # programs this process ran (_run counts): a child's first uses the template's np and typing's caches
 # as the template emptied them (afresh costs page faults); in a shared child (batch.py) the rest make their own
-RAN = [0]
-NUMPY = [load("numpy")]
+RAN, NUMPY = [0], [load("numpy")]
 
 
 def run(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE, source: str = "") -> list:
@@ -207,7 +207,8 @@ def run(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE, 
     return [ok, error, message, {} if board is None else board.cells(), 0 if board is None else board.puts]
 
 
-def answer(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE, source: str = "") -> bytes:
+def answer(compiled: tuple[Any, Any, str], rows: int, cols: int, limits: Limits, semantics: str = MODULE,
+           source: str = "") -> bytes:
     """What a child sends its template for one program, given compile_program's result: ASCII JSON
     [ok, code or None, message, rows, cols, log], `log` the puts of the result board as one flat
     list shape, colour, x, y, ... of plain str and int. The parent replays the log and decides
@@ -215,9 +216,8 @@ def answer(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODUL
     return encode(*_run(compiled, rows, cols, limits, semantics, source))
 
 
-def answer_item(item: bytes, rows: int, cols: int, limits, semantics: str = MODULE) -> bytes:
-    """answer() of an item of the parent (sartco/program/compiled.py): base64 of the marshalled
-    (code, source); code None: the source is compiled here."""
+def answer_item(item: bytes, rows: int, cols: int, limits: Limits, semantics: str = MODULE) -> bytes:
+    """answer() of an item of compiled.prepare's: base64 of marshalled (code, source); code None: compile here."""
     code, source = marshal.loads(binascii.a2b_base64(item))
     return answer((code, None, "") if code else compile_program(source, limits), rows, cols, limits, semantics, source)
 

@@ -74,11 +74,12 @@ class Template:
     runtime: ModuleType  # sartco.program.child.runtime, imported in the template only
 
     def __init__(self, bpf: bytes, breach: bool = False):
+        from ..standins.modules import forget_typing
         from . import confine, runtime
         from .breach import breached
 
         self.runtime, self.breached = runtime, breached
-        runtime.forget_typing()  # a child's first program finds typing's caches empty (runtime.RAN)
+        forget_typing()  # a child's first program finds typing's caches empty (runtime.RAN)
         for name in PRELOAD:
             __import__(name)
         self.filter = confine.Walls(bpf)  # raises confine.Unconfinable
