@@ -117,3 +117,56 @@ def test_floor_cases_give_one_execution_in_five_fresh_templates():
     names = list(FLOOR)
     seen = _five_runs([FLOOR[n] for n in names], fresh_each=True)
     assert {name: len(s) for name, s in zip(names, seen)} == dict.fromkeys(names, 1)
+
+
+# objects a PROGRAM makes and Python hashes by address: each child is forked by the template's
+# zygote (child/zygote.py) from the same memory, so with the fixed layout the same program lays
+# them at the same addresses in every child of every template (one machine and build). On main
+# at 8ee18bd the children were forked from the template itself, whose allocator state its own
+# work between programs left different at each fork: NaN and bound-method sets varied.
+ORDER = "\nraise ValueError(str([L.index(x) for x in set(L)]))"  # the set's order, by identity
+MADE = {
+    "functions": "L = [(lambda i=i: i) for i in range(30)]" + ORDER,
+    "exception instances": "class E(Exception):\n    pass\nL = [E() for _ in range(20)]" + ORDER,
+    "NaNs": "L = [float('nan') for _ in range(20)]" + ORDER,
+    "generators": "def g(j):\n    yield j\nL = [g(j) for j in range(20)]" + ORDER,
+    "bound methods": "class P:\n    def m(self):\n        pass\nL = [P().m for _ in range(20)]" + ORDER,
+    "tuples of them": "def f():\n    pass\nL = [(f, float('nan'), j) for j in range(20)]" + ORDER,
+}
+
+
+def _in_fresh_templates(programs: list[str], templates: int, fillers: tuple[int, ...]) -> list[set]:
+    """Per program, the distinct Executions when it runs in `templates` fresh sandboxes, without
+    the memo, after each number of other programs in `fillers` (its place in a batch)."""
+    seen: list[set] = [set() for _ in programs]
+    for _ in range(templates):
+        box = LocalSandbox(workers=1)
+        try:
+            for n in fillers:
+                batch = [f"put(board, 'nut', 'blue', 0, {k % 8})" for k in range(n)] + programs
+                for i, ex in enumerate(box.execute_many(batch, cache=False, workers=1)[n:]):
+                    seen[i].add(_key(ex))
+        finally:
+            box.close()
+    return seen
+
+
+def test_objects_a_program_makes_lie_alike_in_every_child():
+    allowed = subprocess.run([sys.executable, "-c", ALLOWS], capture_output=True, text=True).stdout.strip()
+    if allowed != "True":
+        pytest.skip("the kernel refuses ASLR off (personality(2)): addresses vary between templates here")
+    names = list(MADE)
+    seen = _in_fresh_templates([MADE[n] for n in names], 5, (0, 1, 3))
+    assert {name: len(s) for name, s in zip(names, seen)} == dict.fromkeys(names, 1)
+    orders = [json.loads(next(iter(s)))[2] for s in seen]
+    assert all(o.startswith("line ") and "ValueError: [" in o for o in orders), orders
+
+
+def test_twenty_children_in_a_row_get_one_execution():
+    allowed = subprocess.run([sys.executable, "-c", ALLOWS], capture_output=True, text=True).stdout.strip()
+    if allowed != "True":
+        pytest.skip("the kernel refuses ASLR off (personality(2)): addresses vary between templates here")
+    program = ("def g(j):\n    yield j\nclass P:\n    def m(self):\n        pass\n"
+               "L = [float('nan') for _ in range(8)] + [g(j) for j in range(8)] + [P().m for _ in range(8)]" + ORDER)
+    seen = _in_fresh_templates([program] * 20, 2, (0,))
+    assert len(set().union(*seen)) == 1

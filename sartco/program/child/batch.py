@@ -75,19 +75,22 @@ def outcome(answer: bytes) -> str | None:
     return code if isinstance(code, str) else None
 
 
+def answers(answer: Callable[..., bytes], sources: list[str], rows: int, cols: int, limits: Limits,
+            semantics: str) -> Iterator[bytes]:
+    """In the child: each source's framed answer as it finishes."""
+    for source in sources:
+        data = answer(source, rows, cols, limits, semantics)
+        yield len(data).to_bytes(4, "big") + data
+
+
 def run(template: Template, sources: list[str], rows: int, cols: int, limits: Limits,
         semantics: str) -> list[tuple[bytes, int, bytes]]:
     """(how, status, answer) per source, as the template reports them: the sources in one child;
     from the first answer that the programs before it could have changed (or none came), each
     in a child of its own."""
     runtime = template.runtime
-
-    def work() -> Iterator[bytes]:
-        for source in sources:
-            answer = runtime.answer(source, rows, cols, limits, semantics)
-            yield len(answer).to_bytes(4, "big") + answer
-
     walls = replace(limits, wall_time=limits.wall_time * len(sources))  # the CPU rlimit covers the chunk
+    work = partial(answers, runtime.answer, sources, rows, cols, limits, semantics)
     how, _, data = template.spawn(work, limits, walls, len(sources))
     done: list[tuple[bytes, int, bytes]] = []
     for answer in frames(data) if how in ENDS else []:
