@@ -10,7 +10,7 @@ instances, random generators, stand-in modules hash by serial; `hash()` of anyth
 hashes by address (functions, None, NaN, exceptions, tuples of them) is a serial; every address
 in a text a program makes (str, repr, format, f-strings, %, str.format) and in its message is
 the serial of its first appearance. FLOOR: what only the template's fixed address layout
-(ASLR off for it, child/template.py _fixed_layout) keeps alike, on one machine and build: sets of
+(ASLR off for it, child/isolation.py fixed_layout) keeps alike, on one machine and build: sets of
 None pairs, of types and of builtins (objects made before the template's first fork).
 """
 import json
@@ -55,8 +55,7 @@ SERIAL = {
                                   "raise ValueError(str([f, None, len, f]))",
     "str.format of a generator": "def g():\n    yield 1\nraise ValueError('{} {!r}'.format(g(), g()))",
 }
-FLOOR = {  # only objects made before the template's first fork: a program's own functions depend
-    # on the template's free lists, which its self-test's timing leaves in any order (docs/sandbox.md)
+FLOOR = {  # objects made before the template's first fork (what the program makes: MADE below)
     "None pairs": "s = {(None, i) for i in range(6)}\nfor i, (_, k) in enumerate(s):\n    put(board, 'washer', 'red', i, k)",
     "a set of types": "ts = [int, str, list, dict, set, tuple, float]\nfor i, t in enumerate(set(ts)):\n"
                       "    put(board, 'washer', 'red', i, ts.index(t))",
@@ -131,6 +130,8 @@ MADE = {
     "NaNs": "L = [float('nan') for _ in range(20)]" + ORDER,
     "generators": "def g(j):\n    yield j\nL = [g(j) for j in range(20)]" + ORDER,
     "bound methods": "class P:\n    def m(self):\n        pass\nL = [P().m for _ in range(20)]" + ORDER,
+    "bound methods of instances with fields": "class P:\n    def __init__(self, j):\n        self.j = j\n"
+                                              "    def m(self):\n        return self.j\nL = [P(j).m for j in range(20)]" + ORDER,
     "tuples of them": "def f():\n    pass\nL = [(f, float('nan'), j) for j in range(20)]" + ORDER,
 }
 
@@ -163,10 +164,19 @@ def test_objects_a_program_makes_lie_alike_in_every_child():
 
 
 def test_twenty_children_in_a_row_get_one_execution():
+    """The first children of a fresh template too (its zygote settles before the first program)."""
     allowed = subprocess.run([sys.executable, "-c", ALLOWS], capture_output=True, text=True).stdout.strip()
     if allowed != "True":
         pytest.skip("the kernel refuses ASLR off (personality(2)): addresses vary between templates here")
-    program = ("def g(j):\n    yield j\nclass P:\n    def m(self):\n        pass\n"
-               "L = [float('nan') for _ in range(8)] + [g(j) for j in range(8)] + [P().m for _ in range(8)]" + ORDER)
-    seen = _in_fresh_templates([program] * 20, 2, (0,))
-    assert len(set().union(*seen)) == 1
+    programs = [MADE["bound methods of instances with fields"], "def g(j):\n    yield j\nclass P:\n    def m(self):\n"
+                "        pass\nL = [float('nan') for _ in range(8)] + [g(j) for j in range(8)] + [P().m for _ in range(8)]"
+                + ORDER]
+    for program in programs:
+        seen = set()
+        for _ in range(2):
+            box = LocalSandbox(workers=1)
+            try:
+                seen |= {_key(box.execute_many([program], cache=False, workers=1)[0]) for _ in range(20)}
+            finally:
+                box.close()
+        assert len(seen) == 1, program

@@ -50,7 +50,7 @@ from types import ModuleType
 from typing import TYPE_CHECKING
 
 from . import batch
-from .zygote import Zygote
+from .zygote import WARM, Zygote
 
 if TYPE_CHECKING:
     from ..execution import Limits
@@ -117,12 +117,13 @@ class Template:
         from .confine import Unconfinable
         from ..execution import Limits
 
-        self.zygote = Zygote(lambda job, write: self._child(*job, write))
-        how, status, answer = self.fork(_open_a_file, Limits(wall_time=10.0))
-        if how == b"unconfined":
-            raise Unconfinable(f"the kernel refused the seccomp filter or the rlimits (status {status})")
-        if (how, status, answer) != (b"exit", 0, b"%d" % errno.EPERM):
-            raise Unconfinable(f"a confined process could open a file ({how.decode()} {status} {answer[:40]!r})")
+        self.zygote = Zygote(lambda job, write: self._child(job[0], job[1], write))
+        for _ in range(WARM):  # the zygote's loop settles meanwhile (zygote.WARM)
+            how, status, answer = self.fork(_open_a_file, Limits(wall_time=10.0))
+            if how == b"unconfined":
+                raise Unconfinable(f"the kernel refused the seccomp filter or the rlimits (status {status})")
+            if (how, status, answer) != (b"exit", 0, b"%d" % errno.EPERM):
+                raise Unconfinable(f"a confined process could open a file ({how.decode()} {status} {answer[:40]!r})")
 
     def fork(self, work: Callable[[], bytes], limits: Limits) -> tuple[bytes, int, bytes]:
         """Run work() (-> the answer's bytes) in a fresh confined child; how it ended, its status

@@ -26,11 +26,16 @@ import os
 import pickle
 import select
 from collections.abc import Callable
+from typing import Any
 
 from .confine import PR_SET_PDEATHSIG, SIGKILL
 from .isolation import drop_capabilities
 
 CLONE_FILES, CLONE_PIDFD, CLONE_NEWPID, SIGCHLD = 0x400, 0x1000, 0x20000000, 17
+# children the template runs before the first program (its self-test, WARM times): the zygote's
+# loop starts from states that drift while CPython's adaptive interpreter specialises its code
+# (measured once: the 1st-6th children from one state, every later one of 150 from another)
+WARM = 16
 CLONE = {"x86_64": 56, "aarch64": 220}  # clone(2)'s syscall number (glibc's wrapper needs a stack)
 
 
@@ -38,7 +43,7 @@ class Zygote:
     """The template's end: `fork(job, answer)` -> a pidfd of a new child that calls born(job,
     answer) (and never returns); `status()` -> its wait status once it has ended."""
 
-    def __init__(self, born: Callable[[object, int], None]):
+    def __init__(self, born: Callable[[Any, int], None]):
         number = CLONE.get(os.uname().machine)
         if number is None:
             raise OSError(errno.ENOSYS, f"clone: no syscall number known for {os.uname().machine}")
@@ -62,7 +67,7 @@ class Zygote:
         if ready:
             raise OSError(-ready, "the zygote did not start")
 
-    def fork(self, job: object, answer: int) -> int:
+    def fork(self, job: Any, answer: int) -> int:
         work = os.memfd_create("work")
         try:
             data = memoryview(pickle.dumps(job))
@@ -89,7 +94,7 @@ class Zygote:
 
 
 def _serve(libc: ctypes.CDLL, number: int, ask: int, tell: int, template: int, alone: int,
-           born: Callable[[object, int], None]) -> None:
+           born: Callable[[Any, int], None]) -> None:
     """The zygote's life: one child per request, each forked from the same memory (every object
     of an iteration is freed before the next; the garbage collector is off here)."""
     try:
