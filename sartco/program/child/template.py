@@ -127,7 +127,8 @@ class Template:
 
     def fork(self, work: Callable[[], bytes], limits: Limits) -> tuple[bytes, int, bytes]:
         """Run work() (-> the answer's bytes) in a fresh confined child; how it ended, its status
-        and what it wrote after CONFINED."""
+        and what it wrote after CONFINED. work is pickled to the child: a module-level function
+        or a partial of one, never a lambda or closure."""
         return self.spawn(partial(_one, work), limits, limits, 0)
 
     def spawn(self, work: Callable[[], Iterable[bytes]], limits: Limits, walls: Limits,
