@@ -5,8 +5,8 @@ and the page faults of that process and of the children it reaped (os.times, get
 program:
   floor     a bare `python -S` that forks with libc's fork() and reaps; the child only _exit(0)s
   template  a template (child.template.Template: its imports, its frozen heap) that reads a
-            program's line, forks, reaps and writes a line, as it does per program; the child
-            only _exit(0)s
+            program's line, has its zygote fork a child (child/zygote.py), waits and writes a
+            line, as it does per program; the child only _exit(0)s
   walls     Template.fork of nothing: the child's descriptors, rlimits, seccomp filter and
             CONFINED, the template's pipe, pidfd and wait
   program   Template.fork of the program as the parent compiled it (runtime.answer_item): load
@@ -26,7 +26,7 @@ import statistics
 import subprocess
 import sys
 import time
-from collections.abc import Callable
+from functools import partial
 from typing import BinaryIO
 
 from sartco.settings import IMPORT_ROOT
@@ -74,38 +74,64 @@ def floor(n: int, core: int = 0) -> tuple[float, float, int]:
 def stage(name: str, inp: BinaryIO, out: BinaryIO) -> int:
     """In a stage process, as a template reads and answers: the filter (a line of base64), then a
     line per program (JSON [source, item]); writes the answer of each (stage "program": base64;
-    the others: an empty line), then the CPU ms and page faults per program (JSON)."""
+    the others: an empty line), then the CPU ms and page faults per program (JSON). The
+    zygotes are ended and reaped before the count, so that their children's CPU is in it."""
     import base64
 
     from .child.template import Template
+    from .child.zygote import Zygote
 
     template = Template(base64.b64decode(inp.readline()))
-    runtime, limits = template.runtime, Limits()
-    fork = template._fork
+    template.start()
+    limits = Limits()
+    bare = Zygote(_exit_at_once) if name == "template" else None
 
-    def bare(source: str, item: bytes) -> bytes:
-        pid = fork()
-        if pid == 0:
-            os._exit(0)
-        os.waitpid(pid, 0)
-        return b""
+    def run(source: str, item: bytes) -> bytes:
+        if bare is not None:
+            read, write = os.pipe()
+            pidfd = bare.fork(None, write)
+            os.close(write)
+            bare.status()  # the zygote waits for it
+            for fd in (pidfd, read):
+                os.close(fd)
+            return b""
+        work = {"walls": partial(_nothing), "program": partial(_program, item, limits),
+                "compiled in the child": partial(_compiled_in_the_child, source, limits)}[name]
+        return template.fork(work, limits)[2]
 
-    run: Callable[[str, bytes], bytes] = {
-        "template": bare,
-        "walls": lambda source, item: template.fork(lambda: b"", limits)[2],
-        "program": lambda source, item: template.fork(
-            lambda: runtime.answer_item(item, 8, 8, limits, MODULE), limits)[2],
-        "compiled in the child": lambda source, item: template.fork(
-            lambda: runtime.answer(runtime.compile_program(source, limits), 8, 8, limits, MODULE), limits)[2],
-    }[name]
     start, faults, n = os.times(), _faults(), 0
     while line := inp.readline():
         source, item = json.loads(line)
         out.write(base64.b64encode(run(source, item.encode())) + b"\n")
         n += 1
+    for zygote in (template.zygote, bare):
+        if zygote is not None:
+            os.close(zygote.ask)
+            os.waitpid(zygote.pid, 0)
     end, faults = os.times(), _faults() - faults
     out.write(json.dumps([(sum(end[:4]) - sum(start[:4])) / max(1, n) * 1e3, faults / max(1, n)]).encode() + b"\n")
     return 0
+
+
+# what a stage's children run (pickled to them by reference: module-level functions)
+def _exit_at_once(job: object, answer: int) -> None:
+    os._exit(0)
+
+
+def _nothing() -> bytes:
+    return b""
+
+
+def _program(item: bytes, limits: Limits) -> bytes:
+    from .child import runtime
+
+    return runtime.answer_item(item, 8, 8, limits, MODULE)
+
+
+def _compiled_in_the_child(source: str, limits: Limits) -> bytes:
+    from .child import runtime
+
+    return runtime.answer(runtime.compile_program(source, limits), 8, 8, limits, MODULE)
 
 
 def _faults() -> int:

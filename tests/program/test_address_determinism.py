@@ -10,7 +10,7 @@ instances, random generators, stand-in modules hash by serial; `hash()` of anyth
 hashes by address (functions, None, NaN, exceptions, tuples of them) is a serial; every address
 in a text a program makes (str, repr, format, f-strings, %, str.format) and in its message is
 the serial of its first appearance. FLOOR: what only the template's fixed address layout
-(ASLR off for it, child/template.py _fixed_layout) keeps alike, on one machine and build: sets of
+(ASLR off for it, child/isolation.py fixed_layout) keeps alike, on one machine and build: sets of
 None pairs, of types and of builtins (objects made before the template's first fork).
 """
 import json
@@ -55,8 +55,7 @@ SERIAL = {
                                   "raise ValueError(str([f, None, len, f]))",
     "str.format of a generator": "def g():\n    yield 1\nraise ValueError('{} {!r}'.format(g(), g()))",
 }
-FLOOR = {  # only objects made before the template's first fork: a program's own functions depend
-    # on the template's free lists, which its self-test's timing leaves in any order (docs/sandbox.md)
+FLOOR = {  # objects made before the template's first fork (what the program makes: MADE below)
     "None pairs": "s = {(None, i) for i in range(6)}\nfor i, (_, k) in enumerate(s):\n    put(board, 'washer', 'red', i, k)",
     "a set of types": "ts = [int, str, list, dict, set, tuple, float]\nfor i, t in enumerate(set(ts)):\n"
                       "    put(board, 'washer', 'red', i, ts.index(t))",
@@ -117,3 +116,67 @@ def test_floor_cases_give_one_execution_in_five_fresh_templates():
     names = list(FLOOR)
     seen = _five_runs([FLOOR[n] for n in names], fresh_each=True)
     assert {name: len(s) for name, s in zip(names, seen)} == dict.fromkeys(names, 1)
+
+
+# objects a PROGRAM makes and Python hashes by address: each child is forked by the template's
+# zygote (child/zygote.py) from the same memory, so with the fixed layout the same program lays
+# them at the same addresses in every child of every template (one machine and build). On main
+# at 8ee18bd the children were forked from the template itself, whose allocator state its own
+# work between programs left different at each fork: NaN and bound-method sets varied.
+ORDER = "\nraise ValueError(str([L.index(x) for x in set(L)]))"  # the set's order, by identity
+MADE = {
+    "functions": "L = [(lambda i=i: i) for i in range(30)]" + ORDER,
+    "exception instances": "class E(Exception):\n    pass\nL = [E() for _ in range(20)]" + ORDER,
+    "NaNs": "L = [float('nan') for _ in range(20)]" + ORDER,
+    "generators": "def g(j):\n    yield j\nL = [g(j) for j in range(20)]" + ORDER,
+    "bound methods": "class P:\n    def m(self):\n        pass\nL = [P().m for _ in range(20)]" + ORDER,
+    "bound methods of instances with fields": "class P:\n    def __init__(self, j):\n        self.j = j\n"
+                                              "    def m(self):\n        return self.j\nL = [P(j).m for j in range(20)]" + ORDER,
+    "tuples of them": "def f():\n    pass\nL = [(f, float('nan'), j) for j in range(20)]" + ORDER,
+}
+
+
+def _in_fresh_templates(programs: list[str], templates: int, fillers: tuple[int, ...]) -> list[set]:
+    """Per program, the distinct Executions when it runs in `templates` fresh sandboxes, without
+    the memo, after each number of other programs in `fillers` (its place in a batch)."""
+    seen: list[set] = [set() for _ in programs]
+    for _ in range(templates):
+        box = LocalSandbox(workers=1)
+        try:
+            for n in fillers:
+                batch = [f"put(board, 'nut', 'blue', 0, {k % 8})" for k in range(n)] + programs
+                for i, ex in enumerate(box.execute_many(batch, cache=False, workers=1)[n:]):
+                    seen[i].add(_key(ex))
+        finally:
+            box.close()
+    return seen
+
+
+def test_objects_a_program_makes_lie_alike_in_every_child():
+    allowed = subprocess.run([sys.executable, "-c", ALLOWS], capture_output=True, text=True).stdout.strip()
+    if allowed != "True":
+        pytest.skip("the kernel refuses ASLR off (personality(2)): addresses vary between templates here")
+    names = list(MADE)
+    seen = _in_fresh_templates([MADE[n] for n in names], 5, (0, 1, 3))
+    assert {name: len(s) for name, s in zip(names, seen)} == dict.fromkeys(names, 1)
+    orders = [json.loads(next(iter(s)))[2] for s in seen]
+    assert all(o.startswith("line ") and "ValueError: [" in o for o in orders), orders
+
+
+def test_twenty_children_in_a_row_get_one_execution():
+    """The first children of a fresh template too (its zygote settles before the first program)."""
+    allowed = subprocess.run([sys.executable, "-c", ALLOWS], capture_output=True, text=True).stdout.strip()
+    if allowed != "True":
+        pytest.skip("the kernel refuses ASLR off (personality(2)): addresses vary between templates here")
+    programs = [MADE["bound methods of instances with fields"], "def g(j):\n    yield j\nclass P:\n    def m(self):\n"
+                "        pass\nL = [float('nan') for _ in range(8)] + [g(j) for j in range(8)] + [P().m for _ in range(8)]"
+                + ORDER]
+    for program in programs:
+        seen = set()
+        for _ in range(2):
+            box = LocalSandbox(workers=1)
+            try:
+                seen |= {_key(box.execute_many([program], cache=False, workers=1)[0]) for _ in range(20)}
+            finally:
+                box.close()
+        assert len(seen) == 1, program

@@ -61,7 +61,10 @@ def test_templates_that_die_whatever_runs_are_the_harness(monkeypatch):
 
 def test_a_program_that_kills_its_real_template_is_its_own_failure(monkeypatch):
     """Both walls down against signals (no namespaces, a filter that wrongly allows kill): the
-    breached program SIGKILLs its template; the verdict is its runtime_error, and the programs
+    breached program SIGKILLs its parent. That is the template's zygote (child/zygote.py); where
+    the kernel lets the zygote have a pid namespace of its own, it is pid 1 there and the signal
+    is ignored, else the zygote dies and the template with it. Either way the verdict is the
+    program's own (runtime_error when the template fell), never the harness's, and the programs
     around it build their boards."""
     wrong = confine.RULES + tuple(confine.Rule(name, "a wrong rule", "any") for name in ("kill", "getppid"))
     monkeypatch.setattr(handle, "NAMESPACES", False)
@@ -72,9 +75,10 @@ def test_a_program_that_kills_its_real_template_is_its_own_failure(monkeypatch):
                                        limits=Limits(wall_time=5.0), cache=False, mode="breach")
     finally:
         sandbox.close()
-    assert [(ex.ok, ex.error) for ex in results] == [(True, None), (False, E.RUNTIME_ERROR), (True, None)], results
+    assert [(ex.ok, ex.error) for ex in results] in (
+        [(True, None), (False, E.RUNTIME_ERROR), (True, None)], [(True, None), (True, None), (True, None)]), results
     assert results[2].cells == {"0:0": [["nut", "red"]]}
-    assert "brought down the sandbox template" in results[1].message
+    assert results[1].ok or "brought down the sandbox template" in results[1].message
 
 
 @pytest.mark.parametrize("mode", ["code", "breach"])

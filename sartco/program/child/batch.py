@@ -80,19 +80,22 @@ def outcome(answer: bytes) -> str | None:
     return code if isinstance(code, str) else None
 
 
+def answers(answer: Callable[..., bytes], items: list[bytes], rows: int, cols: int, limits: Limits,
+            semantics: str) -> Iterator[bytes]:
+    """In the child: each item's framed answer as it finishes."""
+    for item in items:
+        data = answer(item, rows, cols, limits, semantics)
+        yield len(data).to_bytes(4, "big") + data
+
+
 def run(template: Template, items: list[bytes], rows: int, cols: int, limits: Limits,
         semantics: str) -> list[tuple[bytes, int, bytes]]:
     """(how, status, answer) per item (a program as the parent compiled it, sartco/program/compiled.py), as the
     template reports them: the items in one child; from the first answer that the programs
     before it could have changed (or none came), each in a child of its own."""
     runtime = template.runtime
-
-    def work() -> Iterator[bytes]:
-        for item in items:
-            answer = runtime.answer_item(item, rows, cols, limits, semantics)
-            yield len(answer).to_bytes(4, "big") + answer
-
     walls = replace(limits, wall_time=limits.wall_time * len(items))  # the CPU rlimit covers the chunk
+    work = partial(answers, runtime.answer_item, items, rows, cols, limits, semantics)
     how, _, data = template.spawn(work, limits, walls, len(items))
     done: list[tuple[bytes, int, bytes]] = []
     for answer in frames(data) if how in ENDS else []:

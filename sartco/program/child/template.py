@@ -1,5 +1,6 @@
 """The template process: it imports what programs need, builds the kernel's walls, runs no
-program itself, and forks one confined child per program. The child runs that one program and
+program itself, and has one confined child per program, forked by its zygote (zygote.py: every
+child starts from the same memory, so one program's objects lie at the same addresses). The child runs that one program and
 exits, so nothing a program does outlives it: no process runs programs of two answers (only
 one answer's probes, mode "answer", or the harness's gold programs of a batch, "gold", share one).
 
@@ -30,12 +31,11 @@ every one had fallen), inside the same walls; only a template started with `--br
 tests' assume-breach harness, tests/program/test_walls.py) accepts it.
 
 The template never outlives the parent (PR_SET_PDEATHSIG; its stdin closing ends it) and its
-children never outlive it (the same, set in each child).
+zygote and children never outlive it (the same, set in each; the children are the template's own).
 """
 from __future__ import annotations
 
 import base64
-import ctypes
 import errno
 import gc
 import json
@@ -45,10 +45,12 @@ import signal
 import sys
 import time
 from collections.abc import Callable, Iterable
+from functools import partial
 from types import ModuleType
 from typing import TYPE_CHECKING
 
 from . import batch
+from .zygote import WARM, Zygote
 
 if TYPE_CHECKING:
     from ..execution import Limits
@@ -66,6 +68,19 @@ PRELOAD = ("unicodedata",)
 def _vm_bytes() -> int:
     with open("/proc/self/statm") as f:
         return int(f.read().split()[0]) * os.sysconf("SC_PAGE_SIZE")
+
+
+def _one(work: Callable[[], bytes]) -> tuple[bytes]:
+    return (work(),)
+
+
+def _open_a_file() -> bytes:
+    """The self-test's work: the errno of opening a file, or b"opened"."""
+    try:
+        os.open("/proc/self/statm", os.O_RDONLY)
+    except OSError as exc:
+        return b"%d" % exc.errno
+    return b"opened"
 
 
 class Template:
@@ -89,57 +104,50 @@ class Template:
             import socket  # noqa: F401
             import subprocess  # noqa: F401
             import threading  # noqa: F401
-        # libc's fork(), called with the GIL held (PyDLL), not os.fork(): Python's at-fork work
-        # (threading's and random's hooks, the interpreter's re-initialisation for other threads)
-        # doubled the cost of a fork here, and a template has one thread only (checked here), so
-        # the child's interpreter is consistent as it is
+        # the zygote clones children with the GIL held, not os.fork(): Python's at-fork work doubled a
+        # fork's cost, and with one thread only (checked here) the child's interpreter is consistent as it is
         if len(sys._current_frames()) != 1:
             raise RuntimeError("the sandbox template must have one thread")
-        self._fork = ctypes.PyDLL(None, use_errno=True).fork
         gc.collect()
         gc.freeze()  # the template's objects are never collected: a child's collections touch none of them
         self.base = _vm_bytes()
-        self._self_test()
 
-    def _self_test(self) -> None:
-        """A child that tries to open a file must get EPERM from the filter (not EMFILE from the
-        rlimits, not a descriptor), or no program runs here."""
+    def start(self) -> None:
+        """Once the template is set up (its namespaces finished): the zygote that every child is
+        forked from (zygote.py), then the self-test: a child that tries to open a file must get
+        EPERM from the filter (not EMFILE from the rlimits, not a descriptor), or no program runs here."""
         from .confine import Unconfinable
         from ..execution import Limits
 
-        def attempt() -> bytes:
-            try:
-                os.open("/proc/self/statm", os.O_RDONLY)
-            except OSError as exc:
-                return b"%d" % exc.errno
-            return b"opened"
-
-        how, status, answer = self.fork(attempt, Limits(wall_time=10.0))
-        if how == b"unconfined":
-            raise Unconfinable(f"the kernel refused the seccomp filter or the rlimits (status {status})")
-        if (how, status, answer) != (b"exit", 0, b"%d" % errno.EPERM):
-            raise Unconfinable(f"a confined process could open a file ({how.decode()} {status} {answer[:40]!r})")
+        self.zygote = Zygote(lambda job, write: self._child(job[0], job[1], write))
+        for _ in range(WARM):  # the zygote's loop settles meanwhile (zygote.WARM)
+            how, status, answer = self.fork(_open_a_file, Limits(wall_time=10.0))
+            if how == b"unconfined":
+                raise Unconfinable(f"the kernel refused the seccomp filter or the rlimits (status {status})")
+            if (how, status, answer) != (b"exit", 0, b"%d" % errno.EPERM):
+                raise Unconfinable(f"a confined process could open a file ({how.decode()} {status} {answer[:40]!r})")
 
     def fork(self, work: Callable[[], bytes], limits: Limits) -> tuple[bytes, int, bytes]:
         """Run work() (-> the answer's bytes) in a fresh confined child; how it ended, its status
-        and what it wrote after CONFINED."""
-        return self.spawn(lambda: (work(),), limits, limits, 0)
+        and what it wrote after CONFINED. work is pickled to the child: a module-level function
+        or a partial of one, never a lambda or closure."""
+        return self.spawn(partial(_one, work), limits, limits, 0)
 
     def spawn(self, work: Callable[[], Iterable[bytes]], limits: Limits, walls: Limits,
                frames: int) -> tuple[bytes, int, bytes]:
         """Fork a confined child (rlimits of `walls`) that writes every chunk of work(); with
-        `frames`, what it writes is that many framed answers, and each has limits.wall_time."""
+        `frames`, what it writes is that many framed answers, and each has limits.wall_time. The
+        child comes from the zygote (work and walls pickled)."""
         read, write = os.pipe()
-        pid = self._fork()
-        if pid < 0:
-            os.close(read)
-            os.close(write)
-            raise OSError(ctypes.get_errno(), "fork")
-        if pid == 0:
-            self._child(work, walls, write)  # never returns
-        os.close(write)
         try:
-            return self._collect(pid, read, limits.wall_time, frames)
+            pidfd = self.zygote.fork((work, walls), write)
+        except BaseException:
+            os.close(read)
+            raise
+        finally:
+            os.close(write)
+        try:
+            return self._collect(pidfd, read, limits.wall_time, frames)
         finally:
             os.close(read)
 
@@ -164,16 +172,12 @@ class Template:
         finally:
             os._exit(status)
 
-    def _collect(self, pid: int, read: int, wall_time: float, frames: int = 0) -> tuple[bytes, int, bytes]:
+    def _collect(self, pidfd: int, read: int, wall_time: float, frames: int = 0) -> tuple[bytes, int, bytes]:
         chunks: list[bytes] = []
         size, cap = 0, ANSWER_BYTES * max(1, frames)
         stream, at = bytearray(), len(CONFINED)  # with frames: the output so far, the next frame's offset
         deadline = time.monotonic() + wall_time
-        try:
-            pidfd = os.pidfd_open(pid)
-        except (AttributeError, OSError):
-            pidfd = None
-        watch = [read] + ([pidfd] if pidfd is not None else [])
+        watch = [read, pidfd]
         how = None
         try:
             while watch:
@@ -197,7 +201,7 @@ class Template:
                             ended, at = batch.advance(stream, at)
                             if ended:  # the next answer's time starts
                                 deadline = time.monotonic() + wall_time
-                if pidfd is not None and pidfd in ready:
+                if pidfd in ready:
                     watch.remove(pidfd)
                     if read in watch:  # the child ended: read what it left in the pipe
                         while chunk := os.read(read, 1 << 16):
@@ -211,13 +215,12 @@ class Template:
                         break
             if how is not None:
                 try:
-                    os.kill(pid, signal.SIGKILL)
+                    signal.pidfd_send_signal(pidfd, signal.SIGKILL)
                 except ProcessLookupError:
                     pass
-            _, status = os.waitpid(pid, 0)
+            status = self.zygote.status()  # the zygote waits for it
         finally:
-            if pidfd is not None:
-                os.close(pidfd)
+            os.close(pidfd)
         data = b"".join(chunks)
         if how is None:
             if not data.startswith(CONFINED):
@@ -253,10 +256,10 @@ class Template:
                 if breach and not self.breach:
                     how, status, answer = b"unconfined", 0, b""  # never runs: this template is not the tests'
                 elif breach:
-                    how, status, answer = self.fork(lambda: self.breached(json.loads(item), rows, cols), limits)
+                    how, status, answer = self.fork(partial(self.breached, json.loads(item), rows, cols), limits)
                 else:
-                    how, status, answer = self.fork(
-                        lambda: runtime.answer_item(item, rows, cols, limits, semantics), limits)
+                    how, status, answer = self.fork(partial(runtime.answer_item, item, rows, cols, limits, semantics),
+                                                    limits)
                 out.write(b"%s %d %s\n" % (how, status, base64.b64encode(answer)))
                 out.flush()
 
@@ -272,6 +275,7 @@ def main(parent: int = 0, breach: bool = False, namespaces: bool = True) -> int:
     inp, out = sys.stdin.buffer, sys.stdout.buffer
     try:
         template = Template(base64.b64decode(inp.readline()), breach)
+        template.start()  # its zygote, before the capabilities go (zygote.py)
         pid, walls = isolation.finish(refused)
     except (confine.Unconfinable, OSError) as exc:
         out.write(b"unconfined: " + str(exc).encode("ascii", "backslashreplace") + b"\n")
