@@ -66,16 +66,9 @@ def _compile_all(sources) -> tuple[float, float]:
 
 
 def _worker_cpu() -> float:
-    """CPU seconds used so far by this process's live templates and the children they reaped
-    (from /proc: utime, stime, cutime, cstime)."""
-    total = 0.0
-    for pid in pool.local().pids():
-        try:
-            fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
-            total += sum(map(int, fields[11:15])) / os.sysconf("SC_CLK_TCK")
-        except (OSError, IndexError, ValueError):
-            pass
-    return total
+    """CPU seconds used so far by this process's live templates, their zygotes and the children
+    they reaped (costs.usage)."""
+    return costs.usage(pool.local().pids())[0]
 
 
 def _serve(payload: bytes, workers: int, cache: bool) -> tuple[float, float, list[dict]]:

@@ -10,9 +10,8 @@ only thing the parent ever reads back is the child's answer (verdict.py), as bef
 The verdicts are those of a compile in the child:
 - a program refused here (forbidden, syntax_error, resource_limit, ...) gets the Execution its
   child would have answered (no board: it never ran), without a child;
-- the compile runs with the recursion headroom a child had (REMAINING frames below the limit:
-  how deeply nested a program may be before "too deeply nested to compile" does not depend on
-  the caller's stack);
+- every compile runs on one thread of the parent, at the stack depth where a program may be
+  as deeply nested as in a child (calibrated once: DEEPEST), whatever the caller's stack;
 - a compile that takes longer than the wall time is `timeout`, as it was when the child's clock
   covered its compile (the run then gets the whole wall time);
 - the code does not depend on the parent's hash seed or -O: compile() is told optimize=0, and
@@ -25,63 +24,113 @@ from __future__ import annotations
 
 import base64
 import marshal
-import sys
+import os
 import threading
 import time
-from types import CodeType, FrameType
+from collections.abc import Callable
+from concurrent.futures import ThreadPoolExecutor
+from functools import partial
+from types import CodeType
 from typing import Any
 
 from .execution import Execution, Limits
 
-# frames between a compile and the recursion limit in a template's child before issue 46
-# (runtime._depth() == 10 where the child called compile_program, under the default limit 1000)
-REMAINING = 990
+# how deeply nested a program may be before "too deeply nested to compile" depends on the stack
+# it is compiled on; in a template's child before issue 46, a sum of DEEPEST terms compiled and
+# one more did not. The parent compiles on one thread of its own (per process), padded once to
+# the stack depth that gives the same limit.
+DEEPEST = 986
+_compiler: tuple[int, ThreadPoolExecutor] | None = None
+_compiler_lock = threading.Lock()
+_pad: list[int] = []
 
 
-def _depth() -> int:
-    frame: FrameType | None = sys._getframe()
-    n = 0
-    while frame is not None:
-        frame, n = frame.f_back, n + 1
-    return n
+def _sum(terms: int) -> str:
+    return "x = 1\ny = " + " + ".join(["x"] * terms)
 
 
-def _at_headroom(source: str, limits: Limits, thread: bool = False) -> tuple[Any, Any, str]:
-    """runtime.compile_program(source, limits) with REMAINING frames of headroom: deeper calls
-    pad the stack up to it, a caller already deeper runs it in a fresh thread."""
+def _padded(frames: int, work: Callable[[], Any]) -> Any:
+    return _padded(frames - 1, work) if frames > 0 else work()
+
+
+def _calibrated() -> int:
+    """The padding (frames) at which DEEPEST terms compile on a fresh compiler thread and one more
+    does not; each try on a compiler thread of its own (see compile_all)."""
+
+    def deepest(pad: int) -> bool:  # DEEPEST terms compile at this padding
+        with ThreadPoolExecutor(1, thread_name_prefix="sartco-compiler") as once:
+            return once.submit(_compile_all, [_sum(DEEPEST)], Limits(), pad).result()[0][0][0] is not None
+
+    low, high = 0, 400  # deepest(low) holds; find the most padding at which it still does
+    if not deepest(low):
+        return 0
+    while low < high:
+        middle = (low + high + 1) // 2
+        low, high = (middle, high) if deepest(middle) else (low, middle - 1)
+    return low
+
+
+def _compile_all(sources: list[str], limits: Limits, pad: int) -> list[tuple[tuple[Any, Any, str], float]]:
+    """On the compiler thread: compile_program of each source and its seconds, up to and with the
+    first resource_limit (after which this thread's recursion count may be off: CPython 3.11
+    does not always restore it when a compile fails too deep)."""
+    from sartco.world import ErrorCode
+
     from .child.runtime import compile_program
 
-    depth = _depth()  # as runtime._depth() counts it in this frame
-    target = sys.getrecursionlimit() - REMAINING
-    if depth < target:
-        return _at_headroom(source, limits, thread)
-    if depth == target or thread:
-        compiled: tuple[Any, Any, str] = compile_program(source, limits)
-        return compiled
-    out: list[tuple[Any, Any, str]] = []
-    fresh = threading.Thread(target=lambda: out.append(_at_headroom(source, limits, True)), daemon=True)
-    fresh.start()
-    fresh.join()
-    return out[0]
+    made: list[tuple[tuple[Any, Any, str], float]] = []
+    for source in sources:
+        start = time.perf_counter()
+        made.append((_padded(pad, partial(compile_program, source, limits)), time.perf_counter() - start))
+        if made[-1][0][1] is ErrorCode.RESOURCE_LIMIT:
+            break
+    return made
+
+
+def compile_all(sources: list[str], limits: Limits) -> list[tuple[tuple[Any, Any, str], float]]:
+    """runtime.compile_program of each source and the seconds it took, on the compiler thread
+    (the nesting limit of a child); after a resource_limit, on a fresh one."""
+    global _compiler
+    made: list[tuple[tuple[Any, Any, str], float]] = []
+    while len(made) < len(sources):
+        with _compiler_lock:
+            if _compiler is None or _compiler[0] != os.getpid():
+                _pad[:] = [_calibrated()]
+                _compiler = (os.getpid(), ThreadPoolExecutor(1, thread_name_prefix="sartco-compiler"))
+            executor = _compiler[1]
+        made += executor.submit(_compile_all, sources[len(made):], limits, _pad[0]).result()
+        if len(made) < len(sources) or made[-1][0][1] == "resource_limit":
+            with _compiler_lock:
+                if _compiler is not None and _compiler[1] is executor:
+                    executor.shutdown(wait=False)
+                    _compiler = (os.getpid(), ThreadPoolExecutor(1, thread_name_prefix="sartco-compiler"))
+    return made
 
 
 def prepare(source: str, limits: Limits) -> bytes | Execution:
-    """The template's item for one program (a line: base64 of the marshalled (code, source); the
+    """prepare_all of one source."""
+    return prepare_all([source], limits)[0]
+
+
+def prepare_all(sources: list[str], limits: Limits) -> list[bytes | Execution]:
+    """The template's item for each program (a line: base64 of the marshalled (code, source); the
     paper protocol's program sees its own text; code None: compile it in the child;
     child/runtime.answer_item reads it), or the Execution of a program that never runs (refused,
     or a compile longer than the wall time)."""
     from .child.runtime import encode
     from .verdict import decide
 
-    start = time.perf_counter()
-    code, error, message = _at_headroom(source, limits)
-    if time.perf_counter() - start > limits.wall_time:
-        return decide(b"timeout", 0, b"", limits.wall_time)
-    if code is None:
-        return decide(b"exit", 0, encode(False, error, message, None), limits.wall_time)
-    if _frozensets(code):  # compiled in the child, as before (see the module docstring)
-        return base64.b64encode(marshal.dumps((None, source)))
-    return base64.b64encode(marshal.dumps((code, source)))
+    made: list[bytes | Execution] = []
+    for source, ((code, error, message), seconds) in zip(sources, compile_all(sources, limits)):
+        if seconds > limits.wall_time:
+            made.append(decide(b"timeout", 0, b"", limits.wall_time))
+        elif code is None:
+            made.append(decide(b"exit", 0, encode(False, error, message, None), limits.wall_time))
+        elif _frozensets(code):  # compiled in the child, as before (see the module docstring)
+            made.append(base64.b64encode(marshal.dumps((None, source))))
+        else:
+            made.append(base64.b64encode(marshal.dumps((code, source))))
+    return made
 
 
 def _frozensets(code: CodeType) -> bool:

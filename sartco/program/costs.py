@@ -26,6 +26,7 @@ import statistics
 import subprocess
 import sys
 import time
+from pathlib import Path
 from functools import partial
 from typing import BinaryIO
 
@@ -132,6 +133,23 @@ def _compiled_in_the_child(source: str, limits: Limits) -> bytes:
     from .child import runtime
 
     return runtime.answer(runtime.compile_program(source, limits), 8, 8, limits, MODULE)
+
+
+def usage(pids: list[int]) -> tuple[float, int]:
+    """CPU seconds and page faults so far of the live processes `pids` and their live descendants
+    (a template and its zygote), each with the children it reaped (from /proc: utime, stime,
+    cutime, cstime; minflt, cminflt, majflt, cmajflt)."""
+    cpu, faults, todo = 0.0, 0, list(pids)
+    while todo:
+        pid = todo.pop()
+        try:
+            fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+            cpu += sum(map(int, fields[11:15])) / os.sysconf("SC_CLK_TCK")
+            faults += sum(map(int, fields[7:11]))
+            todo += map(int, Path(f"/proc/{pid}/task/{pid}/children").read_text().split())
+        except (OSError, IndexError, ValueError):
+            pass
+    return cpu, faults
 
 
 def _faults() -> int:

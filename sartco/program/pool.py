@@ -172,8 +172,8 @@ class LocalSandbox:
                     first.setdefault(p, i)
                     todo.append(i)
             # compiled here (compiled.py); a program that never runs has its Execution already
-            made = {i: json.dumps(programs[i]).encode() if mode == "breach" else
-                    compiled.prepare(programs[i], limits) for i in todo}
+            made = dict(zip(todo, [json.dumps(programs[i]).encode() for i in todo] if mode == "breach" else
+                            compiled.prepare_all([programs[i] for i in todo], limits)))
             run = [i for i in todo if type(made[i]) is bytes]
             items = [made[i] for i in run]
             groups = None if mode != ANSWER or answers is None else [answers[i] for i in run]

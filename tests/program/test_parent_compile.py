@@ -1,0 +1,38 @@
+"""The parent compiles (issue 46, sartco/program/compiled.py): a refused program gets its verdict
+without a child, and every verdict is the one a compile in the child gave: the nesting limit
+does not move with the caller's stack (the parent's -O and hash seed: test_determinism.py)."""
+from sartco.program import Limits, compiled, pool
+from sartco.world import ErrorCode
+
+
+def _sum(terms: int) -> str:
+    return "x = 1\ny = " + " + ".join(["x"] * terms) + "\nput(board, 'nut', 'red', 0, 0)"
+
+
+def test_a_refused_program_runs_no_child(monkeypatch):
+    sent: list[int] = []
+    real = pool.dispatch
+    monkeypatch.setattr(pool, "dispatch",
+                        lambda sandbox, items, *args: sent.append(len(items)) or real(sandbox, items, *args))
+    box = pool.LocalSandbox(workers=1)
+    try:
+        results = box.execute_many(["import os", "x = (", "y" * 200, "put(board, 'nut', 'red', 1, 1)"],
+                                   limits=Limits(source=100), cache=False)
+    finally:
+        box.close()
+    assert [ex.error for ex in results] == [ErrorCode.FORBIDDEN, ErrorCode.SYNTAX_ERROR, ErrorCode.RESOURCE_LIMIT, None]
+    assert sent == [1]  # only the program that runs went to a template
+
+
+def _deep(frames: int, source: str):
+    return _deep(frames - 1, source) if frames else compiled.prepare(source, Limits())
+
+
+def test_the_nesting_limit_is_the_childs_whatever_the_callers_depth():
+    """986 terms compiled in a template's child, 987 were too deeply nested (issue 32's sandbox);
+    also after a compile that failed too deep (CPython 3.11 may leave its thread's count off)."""
+    for frames in (0, 100, 500, 0):
+        assert type(_deep(frames, _sum(986))) is bytes, frames
+        refused = _deep(frames, _sum(987))
+        assert (refused.error, refused.message) == (ErrorCode.RESOURCE_LIMIT, "the program is too deeply nested to compile")
+
