@@ -1,6 +1,10 @@
 """The parent compiles (issue 46, sartco/program/compiled.py): a refused program gets its verdict
 without a child, and every verdict is the one a compile in the child gave: the nesting limit
 does not move with the caller's stack (the parent's -O and hash seed: test_determinism.py)."""
+import sys
+
+import pytest
+
 from sartco.program import Limits, compiled, pool
 from sartco.world import ErrorCode
 
@@ -28,6 +32,9 @@ def _deep(frames: int, source: str):
     return _deep(frames - 1, source) if frames else compiled.prepare(source, Limits())
 
 
+# the figures are CPython 3.11's (its compiler counts the caller's C stack); 3.12 limits nesting its
+# own way, where this test has no figure yet (make test-py312)
+@pytest.mark.skipif(sys.version_info[:2] != (3, 11), reason="the nesting figures are CPython 3.11's")
 def test_the_nesting_limit_is_the_childs_whatever_the_callers_depth():
     """986 terms compiled in a template's child, 987 were too deeply nested (issue 32's sandbox);
     also after a compile that failed too deep (CPython 3.11 may leave its thread's count off)."""
