@@ -16,9 +16,10 @@ from __future__ import annotations
 import os
 
 import pytest
+from oracle_helpers import plain_run
 
 from sartco.program import MODULE, PAPER, LocalSandbox, Limits, Sandbox, execute_many, use
-from sartco.world import Board, ErrorCode, put
+from sartco.world import ErrorCode
 
 E = ErrorCode
 # a memory cap that a hog reaches at once, and a wall time no loaded machine reaches first
@@ -52,24 +53,6 @@ VARYING = [
     "x = [1]\nfor i in range(300000):\n    x = map(abs, x)\ny = list(x)",  # a crash, or the memory cap first
     "class P:\n    pass\nfor i, p in enumerate({P() for _ in range(8)}):\n    put(board, 'nut', 'red', i, 0)",
 ]
-
-
-def plain_exec(source: str) -> tuple[dict, int]:
-    """The oracle: the program as a script under plain exec with the world's put; its cells and puts."""
-    last, puts = [Board(8, 8)], []
-
-    def counted_put(*args):
-        put(*args)
-        puts.append(args)
-
-    def init_board(rows=8, cols=8):
-        last[0] = Board(rows, cols)
-        return last[0]
-
-    env = {"__name__": "__main__", "board": last[0], "put": counted_put, "init_board": init_board}
-    exec(compile(source, "<honest>", "exec"), env)
-    result = env.get("board")
-    return (result if type(result) is Board else last[0]).cells(), len(puts)
 
 
 def _ray_sandbox():
@@ -112,7 +95,7 @@ def test_honest_programs_build_plain_execs_board(box, semantics):
     got = box.execute_many([HONEST[n] for n in names], limits=LIMITS, semantics=semantics)
     for name, ex in zip(names, got):
         assert ex.ok, (name, ex)
-        assert (ex.cells, ex.puts) == plain_exec(HONEST[name]), name
+        assert (ex.cells, ex.puts) == plain_run(HONEST[name]), name
 
 
 def test_refusals_stops_and_errors_are_the_documented_ones(box):

@@ -11,9 +11,8 @@ chain.from_iterable, unbound methods of built-in types, and numpy arrays used fo
 random) and a reference `put` that takes numpy's integers as the authors' simulator did (it
 indexed a numpy board with them); the sandbox must give ok and exactly the same cells.
 """
-import operator
-
 import pytest
+from oracle_helpers import plain_exec
 
 from sartco.program import execute_many
 from sartco.world import Board, put
@@ -199,25 +198,6 @@ CONSTRUCTS = {
         "try:\n    with suppress(KeyError):\n        [][1]\nexcept IndexError:\n    put(board, 'screw', 'green', 3, 3)"),
 }
 NAMES = list(CONSTRUCTS)
-
-
-def reference_put(board, shape, color, x, y):
-    """put as the authors' simulator took coordinates: any integer, numpy's too."""
-    return put(board, shape, color, operator.index(x), operator.index(y))
-
-
-def plain_exec(source: str) -> dict:
-    """The oracle: the program run as a script, with the real modules."""
-    last = [Board(8, 8)]
-
-    def init_board(rows=8, cols=8):
-        last[0] = Board(rows, cols)
-        return last[0]
-
-    env = {"__name__": "__main__", "board": last[0], "put": reference_put, "init_board": init_board}
-    exec(compile(source, "<honest>", "exec"), env)
-    result = env.get("board")
-    return (result if type(result) is Board else last[0]).cells()
 
 
 @pytest.fixture(scope="module")

@@ -4,7 +4,7 @@ update_wrapper copy plain Python's defaults, and only from the program's own obj
 message is one line to str.splitlines(), and a message whose __str__ raises (even a
 BaseException) still keeps the pieces put before it."""
 import pytest
-from test_honest_constructs import plain_exec
+from oracle_helpers import plain_exec
 
 from sartco.program import execute_many
 from sartco.text import one_line
