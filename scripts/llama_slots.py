@@ -4,9 +4,10 @@
 
 `python -m llama_cpp.server` answers one request at a time (a global lock; no release up to 0.3.36
 has llama.cpp's `--parallel` slots), so a batched client gets no parallelism from one server. This
-starts N of them (`python -m llama_cpp.server SERVER_ARGS --host 127.0.0.1 --port PORT+k`, k = 1..N),
-waits until each answers GET /v1/models, then listens on 127.0.0.1:PORT and hands every request
-to a free server (a request waits while all N are busy). Used by scripts/local_model.sh with one
+starts N of them (`python -m llama_cpp.server SERVER_ARGS --host 127.0.0.1 --port P`, each P a port the
+kernel reports free at that moment, never PORT+k, which another program may hold), waits until each
+answers GET /v1/models, then listens on 127.0.0.1:PORT and hands every request to a free server (a
+request waits while all N are busy). Used by scripts/local_model.sh with one
 server per core (`--n_threads 1` each) and the `openai_batching` backend with concurrency N.
 
 If any server exits, this prints one line naming it and its exit status (e.g. SIGSEGV) and exits
@@ -19,6 +20,7 @@ import http.client
 import os
 import queue
 import signal
+import socket
 import subprocess
 import sys
 import threading
@@ -38,9 +40,22 @@ def describe(code: int) -> str:
     return f"exit code {code}"
 
 
+def free_ports(n: int) -> list[int]:
+    """n distinct ports that nothing listens on or connects from now (all held open together, so
+    the kernel gives n different ones)."""
+    sockets = [socket.socket() for _ in range(n)]
+    try:
+        for s in sockets:
+            s.bind(("127.0.0.1", 0))
+        return [s.getsockname()[1] for s in sockets]
+    finally:
+        for s in sockets:
+            s.close()
+
+
 class Slots:
-    def __init__(self, port: int, n: int, server_args: list[str]):
-        self.ports = [port + k for k in range(1, n + 1)]
+    def __init__(self, n: int, server_args: list[str]):
+        self.ports = free_ports(n)
         self.free: queue.Queue[int] = queue.Queue()
         self.procs = [subprocess.Popen([sys.executable, "-m", "llama_cpp.server", *server_args,
                                         "--host", "127.0.0.1", "--port", str(p)]) for p in self.ports]
@@ -131,7 +146,7 @@ def main() -> None:
     server_args = args.server_args[1:] if args.server_args[:1] == ["--"] else args.server_args
     if args.slots < 1:
         parser.error(f"--slots: at least 1 expected, got {args.slots}")
-    slots = Slots(args.port, args.slots, server_args)
+    slots = Slots(args.slots, server_args)
     signal.signal(signal.SIGTERM, lambda *_: (slots.stop(), os._exit(0)))
     try:
         slots.wait_ready(args.ready_timeout)
@@ -140,7 +155,8 @@ def main() -> None:
         raise
     threading.Thread(target=slots.watch, daemon=True).start()
     server = ThreadingHTTPServer(("127.0.0.1", args.port), handler_for(slots))
-    print(f"llama_slots: {args.slots} llama.cpp servers behind 127.0.0.1:{args.port}", file=sys.stderr, flush=True)
+    ports = ", ".join(map(str, slots.ports))
+    print(f"llama_slots: {args.slots} llama.cpp servers (ports {ports}) behind 127.0.0.1:{args.port}", file=sys.stderr, flush=True)
     try:
         server.serve_forever()
     except KeyboardInterrupt:

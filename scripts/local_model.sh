@@ -11,7 +11,7 @@
 # Registration happens in a scratch folder: the user's own key.json is never read or written.
 # The server is stopped on every exit path (trap on EXIT, INT and TERM).
 #
-# Settings (environment): PORT (8765; the slots use the next SLOTS ports), SLOTS (the number of
+# Settings (environment): PORT (8765; each slot's server takes a free port), SLOTS (the number of
 # cores), EPISODES per experiment (3), DESCRIBE_EPISODES per
 # cobot_describe(_dialogue) experiment (2; 3 + 9 experiments, a dialogue takes up to 8 model calls),
 # OUT (results-local), MAX_TOKENS (512, as the README recommends), GAMES (all three entries:
