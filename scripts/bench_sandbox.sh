@@ -14,6 +14,6 @@ for round in $(seq "$ROUNDS"); do
   for side in "$BASE" "$HERE"; do
     echo "== round $round: $(git -C "$side" log -1 --format='%h %s' | cut -c1-70) ($(uptime | sed 's/.*load/load/'))"
     (cd "$side" && PYTHONPATH="$side" "$PY" -c "import sys; from sartco.cli import main; sys.exit(main())" \
-      bench-execute --data "$DATA" --repeat "$REPEAT" | grep -E "headline|cold,|compile\(\), all")
+      bench-execute --data "$DATA" --repeat "$REPEAT" | grep -E "headline|floor:|execute distinct|cold,|compile\(\), all")  # old and new lines
   done
 done
