@@ -16,9 +16,12 @@ fraction of a second); `sartco execute`, `sartco bench-execute`, run.json (`reco
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from .child import confine, isolation
-from .handle import ENVIRONMENT, TemplateHandle, _Dead
+
+if TYPE_CHECKING:
+    from .handle import TemplateHandle
 
 LIMITS = "address space, CPU time, no file size, 4 descriptors, no process, no core file"
 
@@ -32,6 +35,7 @@ class Wall:
 
 def walls() -> tuple[Wall, ...]:
     """The walls of the local sandbox's templates (see the module docstring)."""
+    from .handle import _Dead
     from .pool import local
 
     template = local().templates(1)[0]
@@ -48,6 +52,8 @@ def walls() -> tuple[Wall, ...]:
 
 def of(template: TemplateHandle, failure: str = "") -> tuple[Wall, ...]:
     """The walls of a started template (`failure`: why it could not start)."""
+    from .handle import ENVIRONMENT
+
     environment = ", ".join(f"{k}={v}" for k, v in ENVIRONMENT.items())
     first = (
         Wall("seccomp", not failure, failure or f"an allow-list of {len(confine.RULES)} syscalls that names their "

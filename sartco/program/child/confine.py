@@ -43,7 +43,6 @@ import ctypes
 import errno
 import math
 import resource
-import tempfile
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -138,6 +137,8 @@ class _SockFprog(ctypes.Structure):
 def compile_filter(rules: tuple[Rule, ...] = RULES) -> bytes:
     """The filter as a BPF program (bytes), compiled by libseccomp through pyseccomp in the parent
     (the template runs without site-packages: it gets these bytes and needs only ctypes)."""
+    import tempfile  # here: the template, which only loads the filter, never imports it
+
     try:
         import pyseccomp as seccomp
     except (ImportError, RuntimeError, OSError) as exc:  # RuntimeError: pyseccomp finds no libseccomp
