@@ -65,22 +65,16 @@ def _compile_all(sources) -> tuple[float, float]:
     return time.perf_counter() - start, time.process_time() - cpu
 
 
-def _worker_cpu() -> float:
-    """CPU seconds used so far by this process's live templates, their zygotes and the children
-    they reaped (costs.usage)."""
-    return costs.usage(pool.local().pids())[0]
-
-
 def _serve(payload: bytes, workers: int, cache: bool) -> tuple[float, float, list[dict]]:
     shutdown()
     # start the workers before the clock (distinct sources: equal ones all go to one worker)
     execute_many([f"x = {i}" for i in range(workers * pool.BATCH)], workers=workers)
     out = io.BytesIO()
-    cpu = time.process_time() + _worker_cpu()
+    cpu = time.process_time() + costs.templates_cpu()
     start = time.perf_counter()
     serve(io.BytesIO(payload), out, workers=workers, cache=cache)
     elapsed = time.perf_counter() - start
-    cpu = time.process_time() + _worker_cpu() - cpu
+    cpu = time.process_time() + costs.templates_cpu() - cpu
     return elapsed, cpu, [json.loads(line) for line in out.getvalue().splitlines()]
 
 

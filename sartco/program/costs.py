@@ -35,6 +35,7 @@ from sartco.settings import IMPORT_ROOT
 from . import compiled
 from .child.confine import compile_filter
 from .handle import HASH_SEED, ISOLATED
+from .pool import local
 from .execution import MODULE, Limits
 from .verdict import decide
 
@@ -150,6 +151,13 @@ def usage(pids: list[int]) -> tuple[float, int]:
         except (OSError, IndexError, ValueError):
             pass
     return cpu, faults
+
+
+def templates_cpu() -> float:
+    """CPU seconds so far of this process's live local templates, their zygotes and the children
+    they reaped: what getrusage's RUSAGE_CHILDREN never sees (a killed template's tree is not
+    reaped by this process)."""
+    return usage(local().pids())[0]
 
 
 def _faults() -> int:

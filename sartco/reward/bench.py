@@ -25,6 +25,7 @@ from sartco.clem.core.probes import probed
 from sartco.clem.core.sandbox import restart, run_many
 from sartco.clem.players.answers import instruct_answers
 from sartco.errors import UserError
+from sartco.program.costs import templates_cpu
 from sartco.protocols import INSTANCE_FILES, INSTANCES_DIR
 
 from .core import Episodes, score
@@ -68,29 +69,20 @@ def answer_sets(episodes: Episodes) -> dict[tuple[str, str], list[tuple[str, obj
     return sets
 
 
-def idle_cpu() -> float:
-    """CPU seconds of starting and ending the workers without a reward (taken off each run's)."""
-    restart()  # reaps the workers used so far: their CPU time is not the idle one
-    idle = cpu_seconds()
-    started()
-    restart()
-    return cpu_seconds() - idle
-
-
-def best_rate(pairs: list, episodes: Episodes, *, batch: int, repeat: int, probes: bool,
-              idle: float) -> tuple[float, float]:
-    """(rewards per wall second, CPU ms per reward: parent and workers) of the fastest of `repeat`
-    runs, each on freshly started workers."""
+def best_rate(pairs: list, episodes: Episodes, *, batch: int, repeat: int, probes: bool) -> tuple[float, float]:
+    """(rewards per wall second, CPU ms per reward: this process, its templates, their zygotes and
+    every program's process) of the fastest of `repeat` runs, each on freshly started workers
+    (their start and end are not counted)."""
     best = (float("inf"), 0.0)
     for _ in range(repeat):
-        cpu = cpu_seconds()
         started()
+        cpu = cpu_seconds() + templates_cpu()
         start = time.perf_counter()
         for i in range(0, len(pairs), batch):
             score(pairs[i:i + batch], episodes, probes=probes)
         elapsed = time.perf_counter() - start
-        restart()  # reaps the workers: their CPU time is counted
-        best = min(best, (elapsed, cpu_seconds() - cpu - idle))
+        best = min(best, (elapsed, cpu_seconds() + templates_cpu() - cpu))
+    restart()
     return len(pairs) / best[0], 1000 * best[1] / len(pairs)
 
 
@@ -121,11 +113,10 @@ def run(args) -> int:
     for key in drawn:
         episodes.gold_draws(key)
     print(f"gold probe draws (once per episode, kept): {len(drawn)} episodes in {time.perf_counter() - start:.1f} s")
-    idle = idle_cpu()
     print(f"{'answers':<22} {'pairs':>6}   rewards/s (CPU ms per reward): with probes, without")
     single = []
     for (label, kind), pairs in sorted(answer_sets(episodes).items(), key=lambda item: (item[0][1] != "single-turn", item[0])):
-        runs = [best_rate(pairs, episodes, batch=args.batch, repeat=args.repeat, probes=p, idle=idle)
+        runs = [best_rate(pairs, episodes, batch=args.batch, repeat=args.repeat, probes=p)
                 for p in (True, False)]
         shown = ",  ".join(f"{rate:>7,.0f} ({cpu:.2f})" for rate, cpu in runs)
         print(f"{label + ', ' + kind:<22} {len(pairs):>6}   {shown}")
