@@ -75,12 +75,14 @@ class LocalSandbox:
                 self._memo.popitem(last=False)
 
     def templates(self, n: int) -> list[TemplateHandle]:
+        """n templates, idle ones first: a batch of another thread may hold one (a game's gold
+        draws made ahead, sartco.clem.core.probes). A template starts at its first program."""
         with self._lock:
             if self._pid != os.getpid():  # a forked child must not share its parent's templates
                 self._templates, self._pid = [], os.getpid()
-            while len(self._templates) < n:
+            while len(self._templates) < max(n, self.workers or default_workers()):
                 self._templates.append(TemplateHandle(self.breach))
-            return self._templates[:n]
+            return sorted(self._templates, key=lambda t: t.lock.locked())[:n]
 
     def pids(self) -> list[int]:
         """The process ids of this sandbox's running templates."""

@@ -112,3 +112,43 @@ def test_which_episodes_are_probed(optimal):
     assert probed(optimal) and probed(first_episode("repetition", "complex"))
     assert not probed(first_episode("sequence_function")) and not probed(first_episode("first_order"))
     assert not probed({**optimal, "probes": 0})
+
+
+def test_draws_started_at_setup_are_the_ones_the_step_uses(optimal, monkeypatch):
+    """BuildGameMaster.setup starts a probed episode's gold draws on a background thread
+    (draw_ahead): the step then waits for those draws instead of drawing, and they are the draws
+    gold_draws makes itself. A draw that failed there is drawn again in the step."""
+    import threading
+
+    from sartco.clem.core import probes
+
+    drew_in = []
+    real = probes.draw_arguments
+
+    def counted(*args, **kwargs):
+        drew_in.append(threading.current_thread().name)
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(probes, "draw_arguments", counted)
+    monkeypatch.setattr(probes, "_drawn", probes.OrderedDict())
+    own = probes.gold_draws(optimal)   # drawn in the step, as without draw_ahead
+    assert drew_in == ["MainThread"]
+    monkeypatch.setattr(probes, "_drawn", probes.OrderedDict())
+    probes.draw_ahead(optimal)
+    probes.draw_ahead(optimal)   # once per episode
+    ahead = probes.gold_draws(optimal)
+    assert drew_in[1:] and all(name.startswith("sartco-gold-draws") for name in drew_in[1:]) and len(drew_in) == 2
+    assert json.dumps(ahead.draws) == json.dumps(own.draws) and ahead.function == own.function == "bn"
+
+    def failing(*args, **kwargs):
+        if threading.current_thread().name.startswith("sartco-gold-draws"):
+            raise probes.HarnessFault("sandbox (gold probe): the template died")
+        return counted(*args, **kwargs)
+
+    monkeypatch.setattr(probes, "draw_arguments", failing)
+    monkeypatch.setattr(probes, "_drawn", probes.OrderedDict())
+    probes.draw_ahead(optimal)
+    assert json.dumps(probes.gold_draws(optimal).draws) == json.dumps(own.draws) and drew_in[-1] == "MainThread"
+    probes.draw_ahead(dict(optimal, task="first_order"))   # an episode without probes: nothing drawn
+    probes.draw_ahead({"task": "optimal_function"})   # nor for what is no episode
+    assert not probes._ahead and len(drew_in) == 3

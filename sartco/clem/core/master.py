@@ -24,8 +24,13 @@ from clemcore.clemgame import DialogueGameMaster
 
 from .card import ScoreCard
 from .harness import HarnessGuard
+from .probes import draw_ahead
 from .transcript import MarkdownTranscript
 
 
 class BuildGameMaster(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameMaster):
     """The base of every game master of a game that ends in a build (see the module doc)."""
+
+    def setup(self, **instance):
+        super().setup(**instance)
+        draw_ahead(instance)  # a probed episode's gold draws, made while the model's first request is out

@@ -28,6 +28,8 @@ from rounds of CANDIDATES x K candidates (ROUNDS at most). Every program runs in
 programs: one confined child per round, `gold=True`), one batch for the K probes of an answer (a
 confined child per program); a harness_error raises HarnessFault. A process keeps the draws of the boards it probed
 (`gold_draws`): every model's episode on a board, and every game's, compares with the same ones.
+A game master starts an episode's draws at its setup on a background thread (`draw_ahead`), so
+that they are made while the model's request is out, not while clemcore steps the episodes.
 
 sequence_function episodes are not probed: their gold function (and the prompt's examples)
 hard-code the puts and ignore the arguments by the task's design, so there is no general gold
@@ -39,9 +41,11 @@ import ast
 import copy
 import functools
 import json
+import os
 import random
 import threading
 from collections import OrderedDict
+from concurrent.futures import Future, ThreadPoolExecutor
 from dataclasses import dataclass
 
 from sartco import settings
@@ -181,22 +185,64 @@ def _draws_key(instance: dict, k: int, seed: int) -> tuple:
 
 def gold_draws(instance: dict, seed: int = PROBE_SEED) -> GoldDraws:
     """The episode's gold function and draws; HarnessFault when the gold program calls no function.
-    Kept per process (DRAWS): the same gold program, board and seed give the same draws."""
+    Kept per process (DRAWS): the same gold program, board and seed give the same draws. Draws
+    started ahead (`draw_ahead`) are waited for; drawn again here if they failed there."""
     gold_name = probed_function(instance["gold_code"], instance["given_code"])
     if gold_name is None:
         raise HarnessFault("probes: the gold program calls no function")
     k = int(instance.get("probes", DEFAULT_PROBES))
     key = _draws_key(instance, k, seed)
     with _drawn_lock:
+        ahead = _ahead.get(key)
+    if ahead is not None:
+        ahead.exception()  # waits for it; what it raised is raised again below, in the episode's own step
+    with _drawn_lock:
         known = _drawn.get(key)
     if known is not None:
         return GoldDraws(known.function, copy.deepcopy(known.draws))
-    drawn = GoldDraws(gold_name, draw_arguments(instance, instance["gold_code"], gold_name, k, seed))
+    return _keep(key, GoldDraws(gold_name, draw_arguments(instance, instance["gold_code"], gold_name, k, seed)))
+
+
+def _keep(key: tuple, drawn: GoldDraws) -> GoldDraws:
     with _drawn_lock:
         _drawn[key] = GoldDraws(drawn.function, copy.deepcopy(drawn.draws))
         while len(_drawn) > DRAWS:
             _drawn.popitem(last=False)
     return drawn
+
+
+# draws started at an episode's setup, by their key: one background thread draws them while the
+# model's request is out (clemcore steps no episode then), so that the step after the answer finds them
+_ahead: dict[tuple, Future] = {}
+_drawer: tuple[int, ThreadPoolExecutor] | None = None
+
+
+def draw_ahead(instance: dict, seed: int = PROBE_SEED) -> None:
+    """Start a probed episode's gold draws on a background thread (BuildGameMaster.setup); nothing
+    for another episode. The draws are those `gold_draws` would make, which waits for them."""
+    global _drawer
+    try:
+        if not probed(instance) or (gold_name := probed_function(instance["gold_code"], instance["given_code"])) is None:
+            return
+        k = int(instance.get("probes", DEFAULT_PROBES))
+        key = _draws_key(instance, k, seed)
+    except (KeyError, TypeError, ValueError):  # not an episode gold_draws can draw: its step says why
+        return
+
+    def draw() -> None:
+        try:
+            _keep(key, GoldDraws(gold_name, draw_arguments(instance, instance["gold_code"], gold_name, k, seed)))
+        finally:
+            with _drawn_lock:
+                _ahead.pop(key, None)
+
+    with _drawn_lock:
+        if key in _drawn or key in _ahead:
+            return
+        if _drawer is None or _drawer[0] != os.getpid():  # a forked process has no thread of its parent's
+            _drawer = (os.getpid(), ThreadPoolExecutor(1, thread_name_prefix="sartco-gold-draws"))
+            _ahead.clear()
+        _ahead[key] = _drawer[1].submit(draw)
 
 
 def run_probes(instance: dict, code: str, seed: int = PROBE_SEED) -> dict:
