@@ -152,3 +152,27 @@ def test_draws_started_at_setup_are_the_ones_the_step_uses(optimal, monkeypatch)
     probes.draw_ahead(dict(optimal, task="first_order"))   # an episode without probes: nothing drawn
     probes.draw_ahead({"task": "optimal_function"})   # nor for what is no episode
     assert not probes._ahead and len(drew_in) == 3
+
+
+def test_draws_still_queued_at_exit_are_dropped(tmp_path):
+    """An interrupted run exits at once: the draws its setups queued are not all made first (the
+    drawer is a daemon thread, stopped before the sandbox shuts down)."""
+    script = f"""
+import json, sys
+from sartco.clem.core import probes
+real = probes.draw_arguments
+def counted(*args, **kwargs):
+    with open({str(tmp_path / "drawn")!r}, "a") as f:
+        f.write("x")
+    return real(*args, **kwargs)
+probes.draw_arguments = counted
+episodes = [ep for e in json.load(open({str(INSTANCES)!r}))["experiments"] for ep in e["game_instances"] if probes.probed(ep)]
+for ep in episodes:
+    probes.draw_ahead(ep)
+print(len(probes._ahead))
+"""
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    queued = int(done.stdout)
+    drawn = (tmp_path / "drawn").read_text() if (tmp_path / "drawn").exists() else ""
+    assert queued > 50 and len(drawn) < queued // 2, (queued, len(drawn))

@@ -38,14 +38,16 @@ function to compare with; first-order episodes have no function.
 from __future__ import annotations
 
 import ast
+import atexit
 import copy
 import functools
 import json
 import os
+import queue
 import random
 import threading
 from collections import OrderedDict
-from concurrent.futures import Future, ThreadPoolExecutor
+from concurrent.futures import Future, wait
 from dataclasses import dataclass
 
 from sartco import settings
@@ -195,7 +197,7 @@ def gold_draws(instance: dict, seed: int = PROBE_SEED) -> GoldDraws:
     with _drawn_lock:
         ahead = _ahead.get(key)
     if ahead is not None:
-        ahead.exception()  # waits for it; what it raised is raised again below, in the episode's own step
+        wait([ahead])  # what it raised (or a cancel) is not kept: a failed draw is drawn again below, in the step
     with _drawn_lock:
         known = _drawn.get(key)
     if known is not None:
@@ -211,16 +213,19 @@ def _keep(key: tuple, drawn: GoldDraws) -> GoldDraws:
     return drawn
 
 
-# draws started at an episode's setup, by their key: one background thread draws them while the
-# model's request is out (clemcore steps no episode then), so that the step after the answer finds them
+# draws started at an episode's setup, by their key: one daemon thread makes them in the order of
+# the setups while the model's request is out (clemcore steps no episode then), so that the step
+# after the answer finds them. A daemon: at exit, draws still queued (an interrupted run) are dropped.
 _ahead: dict[tuple, Future] = {}
-_drawer: tuple[int, ThreadPoolExecutor] | None = None
+_queue: queue.SimpleQueue = queue.SimpleQueue()
+_drawer_pid = 0
+_stopped = threading.Event()
 
 
 def draw_ahead(instance: dict, seed: int = PROBE_SEED) -> None:
-    """Start a probed episode's gold draws on a background thread (BuildGameMaster.setup); nothing
-    for another episode. The draws are those `gold_draws` would make, which waits for them."""
-    global _drawer
+    """Start a probed episode's gold draws on the background thread (BuildGameMaster.setup);
+    nothing for another episode. The draws are those `gold_draws` would make, which waits for them."""
+    global _queue, _drawer_pid
     try:
         if not probed(instance) or (gold_name := probed_function(instance["gold_code"], instance["given_code"])) is None:
             return
@@ -237,12 +242,35 @@ def draw_ahead(instance: dict, seed: int = PROBE_SEED) -> None:
                 _ahead.pop(key, None)
 
     with _drawn_lock:
-        if key in _drawn or key in _ahead:
+        if key in _drawn or key in _ahead or _stopped.is_set():
             return
-        if _drawer is None or _drawer[0] != os.getpid():  # a forked process has no thread of its parent's
-            _drawer = (os.getpid(), ThreadPoolExecutor(1, thread_name_prefix="sartco-gold-draws"))
+        if _drawer_pid != os.getpid():  # the first draw of this process (a forked one has no thread of its parent's)
+            _queue, _drawer_pid = queue.SimpleQueue(), os.getpid()
             _ahead.clear()
-        _ahead[key] = _drawer[1].submit(draw)
+            threading.Thread(target=_draw_in_order, args=(_queue,), name="sartco-gold-draws", daemon=True).start()
+        future: Future[None] = Future()
+        _ahead[key] = future
+        _queue.put((future, draw))
+
+
+def _draw_in_order(jobs: queue.SimpleQueue) -> None:
+    while not _stopped.is_set():
+        future, draw = jobs.get()
+        if future.set_running_or_notify_cancel():
+            try:
+                draw()
+            except BaseException as exc:
+                future.set_exception(exc)
+            else:
+                future.set_result(None)
+
+
+@atexit.register  # after pool's shutdown was registered, so run before it: no draw starts a template again
+def _stop_drawing() -> None:
+    _stopped.set()
+    with _drawn_lock:
+        for future in _ahead.values():
+            future.cancel()
 
 
 def run_probes(instance: dict, code: str, seed: int = PROBE_SEED) -> dict:
