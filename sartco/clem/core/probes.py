@@ -218,14 +218,14 @@ def _keep(key: tuple, drawn: GoldDraws) -> GoldDraws:
 # after the answer finds them. A daemon: at exit, draws still queued (an interrupted run) are dropped.
 _ahead: dict[tuple, Future] = {}
 _queue: queue.SimpleQueue = queue.SimpleQueue()
-_drawer_pid = 0
+_drawer: threading.Thread | None = None
 _stopped = threading.Event()
 
 
 def draw_ahead(instance: dict, seed: int = PROBE_SEED) -> None:
     """Start a probed episode's gold draws on the background thread (BuildGameMaster.setup);
     nothing for another episode. The draws are those `gold_draws` would make, which waits for them."""
-    global _queue, _drawer_pid
+    global _drawer
     try:
         if not probed(instance) or (gold_name := probed_function(instance["gold_code"], instance["given_code"])) is None:
             return
@@ -244,10 +244,9 @@ def draw_ahead(instance: dict, seed: int = PROBE_SEED) -> None:
     with _drawn_lock:
         if key in _drawn or key in _ahead or _stopped.is_set():
             return
-        if _drawer_pid != os.getpid():  # the first draw of this process (a forked one has no thread of its parent's)
-            _queue, _drawer_pid = queue.SimpleQueue(), os.getpid()
-            _ahead.clear()
-            threading.Thread(target=_draw_in_order, args=(_queue,), name="sartco-gold-draws", daemon=True).start()
+        if _drawer is None:  # the first draw of this process
+            _drawer = threading.Thread(target=_draw_in_order, args=(_queue,), name="sartco-gold-draws", daemon=True)
+            _drawer.start()
         future: Future[None] = Future()
         _ahead[key] = future
         _queue.put((future, draw))
@@ -263,6 +262,17 @@ def _draw_in_order(jobs: queue.SimpleQueue) -> None:
                 future.set_exception(exc)
             else:
                 future.set_result(None)
+
+
+def _forked() -> None:
+    """In a forked child: no drawer (a thread is not forked), no draw pending, and a lock that no
+    thread holds (the parent's drawer may have held it at the fork)."""
+    global _drawn_lock, _queue, _drawer
+    _drawn_lock, _queue, _drawer = threading.Lock(), queue.SimpleQueue(), None
+    _ahead.clear()
+
+
+os.register_at_fork(after_in_child=_forked)
 
 
 @atexit.register  # after pool's shutdown was registered, so run before it: no draw starts a template again
