@@ -10,7 +10,8 @@ from pathlib import Path
 
 import pytest
 
-from sartco.clem.core.probes import DEFAULT_PROBES, NO_FUNCTION, probed, probed_function, run_probes, without_usage
+from sartco.clem.core.probe_program import probed_function, without_usage
+from sartco.clem.core.probes import DEFAULT_PROBES, NO_FUNCTION, probed, run_probes
 
 INSTANCES = Path(__file__).resolve().parents[2] / "games" / "cobot_instruct" / "in" / "instances.json"
 

@@ -6,14 +6,14 @@ protocol, sartco.clem.core.building.record_build, final build), the function the
 answer's usage line or loop calls is run on K fresh boards at K held-out arguments, and each
 board is compared with the gold function's board at the same arguments.
 
-The function (`probed_function`): the first call, in source order, in the answer's top-level
+The function (`probed_function`, probe_program.py): the first call, in source order, in the answer's top-level
 statements (inside loops, ifs and try blocks, never inside a def or class body) of a name that a
 top-level `def` of the program (the given code, then the answer; the answer's def wins, as when
 the program runs) defines, with `board` as its first argument (or `board=`). The gold function
 is found by the same rule in the gold program. A repetition answer that calls the given function
 without redefining it probes the given function (`Probe Function` says whose it is).
 
-The probe program (`probe_program`): the given code, the answer without its usage statements
+The probe program (`probe_program`, probe_program.py): the given code, the answer without its usage statements
 (the top-level statements that call the function), a fresh `board = init_board(rows, cols)`,
 then `f(board, [colours], x, y)` - the signature (board, colors, x, y) every prompt gives.
 
@@ -37,10 +37,8 @@ function to compare with; first-order episodes have no function.
 """
 from __future__ import annotations
 
-import ast
 import atexit
 import copy
-import functools
 import json
 import os
 import queue
@@ -57,6 +55,7 @@ from sartco.world import COLORS, SUCCESS_CATEGORY, ErrorCode
 from sartco.program import current
 
 from .errors import HarnessFault
+from .probe_program import probe_program, probed_function, top_defs
 
 PROBED_TASKS = ("optimal_function", "repetition")
 DEFAULT_PROBES = settings.PROBES
@@ -69,63 +68,6 @@ NO_FUNCTION = "no_function"    # a probe's category when the answer calls no fun
 def probed(instance: dict) -> bool:
     """True for an episode whose function is probed."""
     return instance.get("task") in PROBED_TASKS and int(instance.get("probes", DEFAULT_PROBES)) > 0
-
-
-def _top_defs(tree: ast.Module) -> set[str]:
-    return {s.name for s in tree.body if isinstance(s, (ast.FunctionDef, ast.AsyncFunctionDef))}
-
-
-def _calls(node: ast.AST):
-    """Calls in source order, not descending into def, lambda or class bodies."""
-    if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda)):
-        return
-    if isinstance(node, ast.Call):
-        yield node
-    for child in ast.iter_child_nodes(node):
-        yield from _calls(child)
-
-
-def _passes_board(call: ast.Call) -> bool:
-    first = call.args[0] if call.args else next((k.value for k in call.keywords if k.arg == "board"), None)
-    return isinstance(first, ast.Name) and first.id == "board"
-
-
-def _parse(code: str) -> ast.Module | None:
-    try:
-        return ast.parse(code)
-    except (SyntaxError, ValueError):
-        return None
-
-
-def probed_function(code: str, given_code: str = "") -> str | None:
-    """The name of the function `code`'s usage calls (module doc), None when it calls none."""
-    tree, given = _parse(code), _parse(given_code) or ast.Module(body=[], type_ignores=[])
-    if tree is None:
-        return None
-    defined = _top_defs(tree) | _top_defs(given)
-    for statement in tree.body:
-        for call in _calls(statement):
-            if isinstance(call.func, ast.Name) and call.func.id in defined and _passes_board(call):
-                return call.func.id
-    return None
-
-
-@functools.lru_cache(maxsize=1024)  # a draw's candidates and an answer's probes share it
-def without_usage(code: str, name: str) -> str:
-    """`code` without its top-level statements that call `name` (the usage line or loop)."""
-    tree = _parse(code)
-    lines = code.splitlines()
-    drop = set()
-    for s in tree.body if tree else []:
-        if any(isinstance(c.func, ast.Name) and c.func.id == name for c in _calls(s)):
-            drop.update(range(s.lineno - 1, s.end_lineno))
-    return "\n".join(line for i, line in enumerate(lines) if i not in drop)
-
-
-def probe_program(code: str, name: str, args: dict, *, given_code: str, rows: int, cols: int) -> str:
-    parts = [given_code.strip(), without_usage(code, name).strip(), f"board = init_board({rows}, {cols})",
-             f"{name}(board, {list(args['colors'])!r}, {args['x']}, {args['y']})"]
-    return "\n".join(p for p in parts if p) + "\n"
 
 
 def combo_of(instance: dict) -> str:
@@ -312,7 +254,7 @@ def run_probes_many(jobs: list[tuple[dict, str, GoldDraws]]) -> list[dict | Harn
     runs = {size: run_many(programs, *size, answers=labels[size]) for size, programs in batches.items()}
     out: list[dict | HarnessFault] = []
     for (instance, code, gold), (name, start, n) in zip(jobs, plans):
-        source = None if name is None else ("model" if name in _top_defs(_parse(code)) else "given")
+        source = None if name is None else ("model" if name in top_defs(code) else "given")
         probes = [{**args, "category": NO_FUNCTION, "message": "the answer calls no function"} for args, _ in gold.draws]
         executions = runs[(instance["rows"], instance["cols"])][start:start + n]
         fault = next((ex for ex in executions if ex.error == ErrorCode.HARNESS_ERROR), None)
