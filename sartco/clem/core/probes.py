@@ -131,11 +131,9 @@ def gold_draws(instance: dict, seed: int = PROBE_SEED) -> GoldDraws:
     """The episode's gold function and draws; HarnessFault when the gold program calls no function.
     Kept per process (DRAWS): the same gold program, board and seed give the same draws. Draws
     started ahead (`draw_ahead`) are waited for; drawn again here if they failed there."""
-    gold_name = probed_function(instance["gold_code"], instance["given_code"])
+    gold_name, k, key = _plan(instance, seed)
     if gold_name is None:
         raise HarnessFault("probes: the gold program calls no function")
-    k = int(instance.get("probes", DEFAULT_PROBES))
-    key = _draws_key(instance, k, seed)
     with _drawn_lock:
         ahead = _ahead.get(key)
     if ahead is not None:
@@ -144,10 +142,22 @@ def gold_draws(instance: dict, seed: int = PROBE_SEED) -> GoldDraws:
         known = _drawn.get(key)
     if known is not None:
         return GoldDraws(known.function, copy.deepcopy(known.draws))
-    return _keep(key, GoldDraws(gold_name, draw_arguments(instance, instance["gold_code"], gold_name, k, seed)))
+    return _draw(instance, gold_name, k, seed, key)
 
 
-def _keep(key: tuple, drawn: GoldDraws) -> GoldDraws:
+def _plan(instance: dict, seed: int) -> tuple[str | None, int, tuple]:
+    """What decides an episode's draws: the gold function's name, K and the key; (None, 0, ())
+    when the gold program calls no function."""
+    gold_name = probed_function(instance["gold_code"], instance["given_code"])
+    if gold_name is None:
+        return None, 0, ()
+    k = int(instance.get("probes", DEFAULT_PROBES))
+    return gold_name, k, _draws_key(instance, k, seed)
+
+
+def _draw(instance: dict, gold_name: str, k: int, seed: int, key: tuple) -> GoldDraws:
+    """Draw the episode's boards and keep them (DRAWS)."""
+    drawn = GoldDraws(gold_name, draw_arguments(instance, instance["gold_code"], gold_name, k, seed))
     with _drawn_lock:
         _drawn[key] = GoldDraws(drawn.function, copy.deepcopy(drawn.draws))
         while len(_drawn) > DRAWS:
@@ -169,16 +179,15 @@ def draw_ahead(instance: dict, seed: int = PROBE_SEED) -> None:
     nothing for another episode. The draws are those `gold_draws` would make, which waits for them."""
     global _drawer
     try:
-        if not probed(instance) or (gold_name := probed_function(instance["gold_code"], instance["given_code"])) is None:
-            return
-        k = int(instance.get("probes", DEFAULT_PROBES))
-        key = _draws_key(instance, k, seed)
+        gold_name, k, key = _plan(instance, seed) if probed(instance) else (None, 0, ())
     except (KeyError, TypeError, ValueError):  # not an episode gold_draws can draw: its step says why
+        return
+    if gold_name is None:
         return
 
     def draw() -> None:
         try:
-            _keep(key, GoldDraws(gold_name, draw_arguments(instance, instance["gold_code"], gold_name, k, seed)))
+            _draw(instance, gold_name, k, seed, key)
         finally:
             with _drawn_lock:
                 _ahead.pop(key, None)
