@@ -87,6 +87,16 @@ def code_bleu_detail(pred: str, gold: str) -> CodeBleu:
     return _code_bleu(pred, gold)
 
 
+def analyse_gold(gold: str) -> None:
+    """Analyse a gold program before its answers are scored (the per-program half of code_bleu,
+    memoised): done ahead of an episode's step (sartco.clem.core.ahead), the step finds it."""
+    if isinstance(gold, str) and gold.strip():
+        try:
+            _analyse(gold.strip())
+        except Exception:  # code_bleu meets it again when it scores, and says why
+            pass
+
+
 @lru_cache(maxsize=4096)
 def _code_bleu(pred: str, gold: str) -> CodeBleu:
     try:

@@ -138,11 +138,11 @@ def test_draws_started_at_setup_are_the_ones_the_step_uses(optimal, monkeypatch)
     probes.draw_ahead(optimal)
     probes.draw_ahead(optimal)   # once per episode
     ahead = probes.gold_draws(optimal)
-    assert drew_in[1:] and all(name.startswith("sartco-gold-draws") for name in drew_in[1:]) and len(drew_in) == 2
+    assert drew_in[1:] and all(name.startswith("sartco-ahead") for name in drew_in[1:]) and len(drew_in) == 2
     assert json.dumps(ahead.draws) == json.dumps(own.draws) and ahead.function == own.function == "bn"
 
     def failing(*args, **kwargs):
-        if threading.current_thread().name.startswith("sartco-gold-draws"):
+        if threading.current_thread().name.startswith("sartco-ahead"):
             raise probes.HarnessFault("sandbox (gold probe): the template died")
         return counted(*args, **kwargs)
 

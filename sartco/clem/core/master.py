@@ -20,8 +20,13 @@ clemcore's hooks; it re-states none of the bases.
 """
 from __future__ import annotations
 
+from functools import partial
+
 from clemcore.clemgame import DialogueGameMaster
 
+from sartco.scores.metrics import analyse_gold
+
+from . import ahead
 from .card import ScoreCard
 from .harness import HarnessGuard
 from .probes import draw_ahead
@@ -33,4 +38,7 @@ class BuildGameMaster(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameM
 
     def setup(self, **instance):
         super().setup(**instance)
-        draw_ahead(instance)  # a probed episode's gold draws, made while the model's first request is out
+        # made while the model's first request is out (ahead.py): a probed episode's gold draws,
+        # the gold program's half of CodeBLEU
+        draw_ahead(instance)
+        ahead.submit(partial(analyse_gold, instance.get("gold_code")))

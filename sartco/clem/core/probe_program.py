@@ -38,6 +38,7 @@ def top_defs(code: str) -> set[str]:
     return _top_defs(tree) if tree is not None else set()
 
 
+@functools.lru_cache(maxsize=4096)  # each step asks it of the episode's gold and of the answer
 def probed_function(code: str, given_code: str = "") -> str | None:
     """The name of the function `code`'s usage calls (module doc), None when it calls none."""
     tree, given = _parse(code), _parse(given_code) or ast.Module(body=[], type_ignores=[])

@@ -37,11 +37,9 @@ function to compare with; first-order episodes have no function.
 """
 from __future__ import annotations
 
-import atexit
 import copy
 import json
 import os
-import queue
 import random
 import threading
 from collections import OrderedDict
@@ -54,6 +52,7 @@ from sartco.world import COLORS, SUCCESS_CATEGORY, ErrorCode
 
 from sartco.program import current
 
+from . import ahead
 from .errors import HarnessFault
 from .probe_program import probe_program, probed_function, top_defs
 
@@ -135,9 +134,9 @@ def gold_draws(instance: dict, seed: int = PROBE_SEED) -> GoldDraws:
     if gold_name is None:
         raise HarnessFault("probes: the gold program calls no function")
     with _drawn_lock:
-        ahead = _ahead.get(key)
-    if ahead is not None:
-        wait([ahead])  # what it raised (or a cancel) is not kept: a failed draw is drawn again below, in the step
+        started = _ahead.get(key)
+    if started is not None:
+        wait([started])  # what it raised (or a cancel) is not kept: a failed draw is drawn again below, in the step
     with _drawn_lock:
         known = _drawn.get(key)
     if known is not None:
@@ -165,19 +164,13 @@ def _draw(instance: dict, gold_name: str, k: int, seed: int, key: tuple) -> Gold
     return drawn
 
 
-# draws started at an episode's setup, by their key: one daemon thread makes them in the order of
-# the setups while the model's request is out (clemcore steps no episode then), so that the step
-# after the answer finds them. A daemon: at exit, draws still queued (an interrupted run) are dropped.
+# draws started at an episode's setup (ahead.py), by their key
 _ahead: dict[tuple, Future] = {}
-_queue: queue.SimpleQueue = queue.SimpleQueue()
-_drawer: threading.Thread | None = None
-_stopped = threading.Event()
 
 
 def draw_ahead(instance: dict, seed: int = PROBE_SEED) -> None:
-    """Start a probed episode's gold draws on the background thread (BuildGameMaster.setup);
-    nothing for another episode. The draws are those `gold_draws` would make, which waits for them."""
-    global _drawer
+    """Start a probed episode's gold draws on the background thread (ahead.py); nothing for another
+    episode. The draws are those `gold_draws` would make, which waits for them."""
     try:
         gold_name, k, key = _plan(instance, seed) if probed(instance) else (None, 0, ())
     except (KeyError, TypeError, ValueError):  # not an episode gold_draws can draw: its step says why
@@ -193,45 +186,22 @@ def draw_ahead(instance: dict, seed: int = PROBE_SEED) -> None:
                 _ahead.pop(key, None)
 
     with _drawn_lock:
-        if key in _drawn or key in _ahead or _stopped.is_set():
+        if key in _drawn or key in _ahead:
             return
-        if _drawer is None:  # the first draw of this process
-            _drawer = threading.Thread(target=_draw_in_order, args=(_queue,), name="sartco-gold-draws", daemon=True)
-            _drawer.start()
-        future: Future[None] = Future()
-        _ahead[key] = future
-        _queue.put((future, draw))
-
-
-def _draw_in_order(jobs: queue.SimpleQueue) -> None:
-    while not _stopped.is_set():
-        future, draw = jobs.get()
-        if future.set_running_or_notify_cancel():
-            try:
-                draw()
-            except BaseException as exc:
-                future.set_exception(exc)
-            else:
-                future.set_result(None)
+        future = ahead.submit(draw)
+        if future is not None:
+            _ahead[key] = future
 
 
 def _forked() -> None:
-    """In a forked child: no drawer (a thread is not forked), no draw pending, and a lock that no
-    thread holds (the parent's drawer may have held it at the fork)."""
-    global _drawn_lock, _queue, _drawer
-    _drawn_lock, _queue, _drawer = threading.Lock(), queue.SimpleQueue(), None
+    """In a forked child: no draw pending, and a lock that no thread holds (the parent's drawer
+    may have held it at the fork)."""
+    global _drawn_lock
+    _drawn_lock = threading.Lock()
     _ahead.clear()
 
 
 os.register_at_fork(after_in_child=_forked)
-
-
-@atexit.register  # after pool's shutdown was registered, so run before it: no draw starts a template again
-def _stop_drawing() -> None:
-    _stopped.set()
-    with _drawn_lock:
-        for future in _ahead.values():
-            future.cancel()
 
 
 def run_probes(instance: dict, code: str, seed: int = PROBE_SEED) -> dict:
