@@ -1,5 +1,5 @@
 """What the function probes cost: per probed episode of an instance file, the time of the
-episode's own build (sartco.clem.core.building.build_for, the baseline) beside the time of its probes
+episode's own build (sartco.clem.core.answer_builds.build_for, the baseline) beside the time of its probes
 (sartco.clem.core.probes.run_probes), both on the gold answer, in the same command.
 
     .venv/bin/python tools/bench_probes.py [INSTANCE_FILE] [--per-cell N]
@@ -12,7 +12,7 @@ import statistics
 import time
 from pathlib import Path
 
-from sartco.clem.core.building import build_for
+from sartco.clem.core.answer_builds import build_for
 from sartco.clem.core.probes import probed, run_probes
 
 DEFAULT = Path(__file__).resolve().parents[1] / "games" / "cobot_instruct" / "in" / "instances.json"

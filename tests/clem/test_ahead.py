@@ -15,7 +15,7 @@ def test_work_runs_on_the_background_thread_in_the_order_submitted():
     seen = []
     futures = [ahead.submit(lambda i=i: seen.append((i, threading.current_thread().name)) or i) for i in range(5)]
     assert [f.result(timeout=60) for f in futures] == list(range(5))
-    assert [i for i, _ in seen] == list(range(5)) and {name for _, name in seen} == {"sartco-ahead"}
+    assert [i for i, _ in seen] == list(range(5)) and {name for _, name in seen} == {"sartco-ahead-setup"}
     failing = ahead.submit(lambda: 1 / 0)
     assert isinstance(failing.exception(timeout=60), ZeroDivisionError)   # left to the step
     assert ahead.submit(lambda: "after").result(timeout=60) == "after"   # the thread goes on
@@ -35,3 +35,64 @@ def test_the_gold_analysed_ahead_gives_the_same_codebleu_and_the_step_only_reads
     assert (after.hits - before.hits, after.misses - before.misses) == (1, 1)   # the gold read, the answer analysed
     metrics.analyse_gold("")   # nothing to analyse: no error, nothing kept
     metrics.analyse_gold("x = (" * 10)   # what codebleu cannot parse is left to the step, which says why
+
+
+def _episode():
+    import json
+    from pathlib import Path
+
+    data = json.loads((Path(__file__).resolve().parents[2] / "games" / "cobot_instruct" / "in" / "instances.json").read_text())
+    return next(ep for e in data["experiments"] for ep in e["game_instances"] if ep["task"] == "optimal_function")
+
+
+def _begun(answer_builds) -> None:
+    """Wait until the one build started has begun on its lane (a step drops one that has not)."""
+    import time
+
+    (future,) = answer_builds._started.values()
+    while not (future.running() or future.done()):
+        time.sleep(0.001)
+
+
+def test_a_build_started_when_its_answer_came_in_is_the_one_the_step_takes(monkeypatch):
+    """answer_builds.start_build (the builder's answer came in) builds on the "answers" lane;
+    build_for takes that build: the same record as a build in the step. A build that has not
+    begun is dropped and built in the step (no step waits behind another's); one that failed
+    there is built again in the step."""
+    from sartco.clem.core import answer_builds, building
+
+    episode = _episode()
+    code, codes = episode["gold_code"], [episode["gold_code"]]
+    real, built_in = building.build, []
+
+    def counted(*args, **kwargs):
+        built_in.append(threading.current_thread().name)
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(building, "build", counted)
+    own = answer_builds.build_for(episode, code, turn_codes=codes)
+    assert built_in == ["MainThread"] and own.es == 1
+    answer_builds.start_build(episode, code, turn_codes=codes)
+    answer_builds.start_build(episode, code, turn_codes=codes)   # once per answer
+    _begun(answer_builds)
+    assert answer_builds.build_for(episode, code, turn_codes=codes).to_json() == own.to_json()
+    assert built_in[1:] == ["sartco-ahead-answers"] and not answer_builds._started
+
+    held, release = threading.Event(), threading.Event()
+    ahead.submit(lambda: held.set() or release.wait(60), lane="answers")   # the lane is busy
+    held.wait(60)
+    answer_builds.start_build(episode, code, turn_codes=codes)
+    assert answer_builds.build_for(episode, code, turn_codes=codes).to_json() == own.to_json()
+    assert built_in[-1] == "MainThread"   # built in the step, not waited for
+    release.set()
+
+    def failing(*args, **kwargs):
+        if threading.current_thread().name == "sartco-ahead-answers":
+            raise RuntimeError("the sandbox failed here")
+        return counted(*args, **kwargs)
+
+    monkeypatch.setattr(building, "build", failing)
+    answer_builds.start_build(episode, code, turn_codes=codes)
+    _begun(answer_builds)
+    assert answer_builds.build_for(episode, code, turn_codes=codes).to_json() == own.to_json()
+    assert built_in[-1] == "MainThread" and len(built_in) == 4

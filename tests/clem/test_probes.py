@@ -43,7 +43,7 @@ bn(board, ('green', 'red'), 4, 3)"""
 
 
 def test_a_hard_coding_function_passes_es_and_fails_every_probe(optimal):
-    from sartco.clem.core.building import build_for
+    from sartco.clem.core.answer_builds import build_for
     assert build_for(optimal, HARD_CODED).es == 1
     result = run_probes(optimal, HARD_CODED)
     assert (result["function"], result["source"], result["share"]) == ("bn", "model", 0.0)
@@ -52,7 +52,7 @@ def test_a_hard_coding_function_passes_es_and_fails_every_probe(optimal):
 
 
 def test_a_general_function_passes_es_and_every_probe(optimal):
-    from sartco.clem.core.building import build_for
+    from sartco.clem.core.answer_builds import build_for
     assert build_for(optimal, GENERAL).es == 1
     result = run_probes(optimal, GENERAL)
     assert result["share"] == 1.0 and {p["category"] for p in result["probes"]} == {"success"}
@@ -138,11 +138,11 @@ def test_draws_started_at_setup_are_the_ones_the_step_uses(optimal, monkeypatch)
     probes.draw_ahead(optimal)
     probes.draw_ahead(optimal)   # once per episode
     ahead = probes.gold_draws(optimal)
-    assert drew_in[1:] and all(name.startswith("sartco-ahead") for name in drew_in[1:]) and len(drew_in) == 2
+    assert drew_in[1:] and all(name.startswith("sartco-ahead-setup") for name in drew_in[1:]) and len(drew_in) == 2
     assert json.dumps(ahead.draws) == json.dumps(own.draws) and ahead.function == own.function == "bn"
 
     def failing(*args, **kwargs):
-        if threading.current_thread().name.startswith("sartco-ahead"):
+        if threading.current_thread().name.startswith("sartco-ahead-setup"):
             raise probes.HarnessFault("sandbox (gold probe): the template died")
         return counted(*args, **kwargs)
 

@@ -1,11 +1,14 @@
-"""Work an episode's step will need, started at the episode's setup (BuildGameMaster.setup) and
-done on one background thread while the model's request is out: clemcore steps no episode then,
-so the step after the answer finds it done instead of doing it while the model server waits.
+"""Work an episode's step will need, started before the step and done on background threads: at
+the episode's setup (BuildGameMaster.setup), while the model's request is out (clemcore steps no
+episode then), and when an answer comes in, while clemcore steps the round's other episodes. The
+step then finds it done instead of doing it while the model server waits.
 Today: the probes' gold draws (probes.draw_ahead) and the gold program's CodeBLEU analysis
-(scoring.analyse_ahead). The work is the step's own, memoised: done ahead or not, the results
+(metrics.analyse_gold) at the setup, and an answer's build when the answer comes in
+(building.start_build: clemcore's batchwise runner hands a round's answers to their players
+before it steps the first episode). The work is the step's own, memoised: done ahead or not, the results
 are the same; whatever it raises is left to the step, which does it again.
 
-One daemon thread takes the work in the order of the setups. At exit (an interrupted run) the
+A daemon thread per lane takes its work in order. At exit (an interrupted run) the
 work still queued is dropped, not done. A forked process gets its own queue and no thread (a
 thread is not forked)."""
 from __future__ import annotations
@@ -20,24 +23,25 @@ from concurrent.futures import Future
 import sartco.program.pool  # noqa: F401  its shutdown registered first, so that _stop runs before it
 
 _lock = threading.Lock()
-_queue: queue.SimpleQueue = queue.SimpleQueue()
-_worker: threading.Thread | None = None
+_lanes: dict[str, queue.SimpleQueue] = {}  # a queue and a thread per lane
 _pending: set[Future] = set()
 _stopped = threading.Event()
 
 
-def submit(work: Callable[[], object]) -> Future | None:
-    """Queue work() for the background thread: its Future, or None once the process is exiting."""
-    global _worker
+def submit(work: Callable[[], object], lane: str = "setup") -> Future | None:
+    """Queue work() for the lane's background thread: its Future, or None once the process is
+    exiting. Lanes do not wait for each other: "setup" (an episode's setup), "answers" (an answer
+    that came in: its build, started while clemcore steps the round's other episodes)."""
     with _lock:
         if _stopped.is_set():
             return None
-        if _worker is None:  # the first work of this process
-            _worker = threading.Thread(target=_work_in_order, args=(_queue,), name="sartco-ahead", daemon=True)
-            _worker.start()
+        jobs = _lanes.get(lane)
+        if jobs is None:  # the lane's first work in this process
+            jobs = _lanes[lane] = queue.SimpleQueue()
+            threading.Thread(target=_work_in_order, args=(jobs,), name=f"sartco-ahead-{lane}", daemon=True).start()
         future: Future = Future()
         _pending.add(future)
-        _queue.put((future, work))
+        jobs.put((future, work))
     return future
 
 
@@ -55,8 +59,9 @@ def _work_in_order(jobs: queue.SimpleQueue) -> None:
 
 def _forked() -> None:
     """In a forked child: no thread, nothing queued, a lock that no thread holds."""
-    global _lock, _queue, _worker
-    _lock, _queue, _worker = threading.Lock(), queue.SimpleQueue(), None
+    global _lock
+    _lock = threading.Lock()
+    _lanes.clear()
     _pending.clear()
 
 

@@ -1,6 +1,6 @@
 """Run a builder's code through sartco.program and record what happened, as one JSON-able record.
 
-The game master calls `build_for(instance, ...)` (`build` with the instance's board fields) once
+The game master calls `build_for(instance, ...)` (answer_builds.py: `build` with the instance's board fields) once
 per episode (or once per attempt in a repair experiment) and records each build with
 `record_build`: its board event for the transcript and, for the build the episode ends with
 (`final`), the record for the scorer and the game state (sartco.clem.core.outcomes). A build
@@ -175,16 +175,6 @@ def parse_failure(target: dict, message: str, *, turn_codes: list[str] | None = 
         cells={}, target=target, puts=0, es=0, category=error,
         precision=0.0, recall=0.0, f1=0.0, rows=rows, cols=cols, turn_codes=turn_codes,
     )
-
-
-def build_for(instance: dict, builder_code: str, turn_codes: list[str] | None = None) -> BuildRecord:
-    """`build` with the target, given code and board size of a game instance (the fields of
-    sartco.clem.core.instance_files.board_fields); HarnessFault when the sandbox failed (harness_error)."""
-    record = build(builder_code, instance["target"], given_code=instance["given_code"],
-                   rows=instance["rows"], cols=instance["cols"], turn_codes=turn_codes)
-    if record.error == ErrorCode.HARNESS_ERROR:
-        raise sandbox_fault(record)
-    return record
 
 
 def sandbox_fault(record: BuildRecord) -> HarnessFault:

@@ -3,7 +3,7 @@
 A harness fault is anything the model did not cause: the model server gave no answer (the
 backend's retries given up: a `NoAnswer`, sartco.clem.tooling.batching), the sandbox could not run the
 program or gave no usable answer (ErrorCode.HARNESS_ERROR from sartco.program, raised as HarnessFault by
-sartco.clem.core.building.build_for and sartco.games.instruct.paper.finish_paper), or the game master or the
+sartco.clem.core.answer_builds.build_for and sartco.games.instruct.paper.finish_paper), or the game master or the
 scorer raised. Such an episode is recorded with its reason and counts as not played:
 - playing (`HarnessGuard`, BuildGameMaster's second base, after ScoreCard and before
   MarkdownTranscript: sartco.clem.core.master): an exception in a step ends the

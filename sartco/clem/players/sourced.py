@@ -10,6 +10,7 @@ The game master never answers for a player: it sends messages and reads answers.
 """
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Protocol
 
 from clemcore.clemgame import Player
@@ -42,6 +43,9 @@ class SourcedPlayer(Player):
         super().__init__(model, name=name, game_role=game_role)
         self.answers = answers
         self.turn = 0  # answers given so far
+        # the game master's hook for an answer that came in, before clemcore steps the episode with it
+        # (sartco.clem.core.answer_builds.start_build); what it raises is left to the step
+        self.on_answer: Callable[[str], None] | None = None
 
     def _custom_response(self, context: dict) -> str:
         self.turn += 1
@@ -51,8 +55,15 @@ class SourcedPlayer(Player):
         """clemcore's, with the answer and its call record escaped (sartco.text) before the
         player logs or memorizes them: player_N.requests.json stays strict UTF-8. The game
         master escapes the answer it reads the same way (sartco.clem.core.transcript)."""
-        return super().perceive_response(escape(response) if isinstance(response, str) else response,
-                                         log_event=log_event, memorize=memorize, metadata=escape_all(metadata))
+        answer = escape(response) if isinstance(response, str) else response
+        perceived = super().perceive_response(answer, log_event=log_event, memorize=memorize,
+                                              metadata=escape_all(metadata))
+        if self.on_answer is not None and isinstance(answer, str):
+            try:
+                self.on_answer(answer)
+            except Exception:  # work ahead only: the step meets the same answer and says what is wrong
+                pass
+        return perceived
 
 
 class Builder(SourcedPlayer):

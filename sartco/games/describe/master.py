@@ -34,7 +34,8 @@ from clemcore.clemgame import Player
 from clemcore.clemgame.errors import ParseError
 
 from sartco.clem.core.benchmark import BuildBenchmark
-from sartco.clem.core.building import BuildRecord, build_for, parse_failure_for, record_build
+from sartco.clem.core.answer_builds import build_for
+from sartco.clem.core.building import BuildRecord, parse_failure_for, record_build
 from sartco.clem.core.instance_checks import json_fields
 from sartco.clem.core.master import BuildGameMaster
 from sartco.clem.core.outcomes import log_outcome

@@ -34,7 +34,8 @@ from clemcore.clemgame import Player
 from clemcore.clemgame.errors import ParseError
 
 from sartco.clem.core.benchmark import BuildBenchmark
-from sartco.clem.core.building import BuildRecord, build_for, parse_failure_for, record_build
+from sartco.clem.core.answer_builds import build_for, start_build
+from sartco.clem.core.building import BuildRecord, parse_failure_for, record_build
 from sartco.clem.core.feedback import feedback_for, max_attempts
 from sartco.clem.core.instance_checks import json_fields
 from sartco.clem.core.master import BuildGameMaster
@@ -60,18 +61,31 @@ class CobotInstruct(BuildGameMaster):
         model = self.player_models[0]
         self.builder = Builder(model, instruct_answers(model.name, instance, paper=self.paper))
         self.add_player(self.builder, initial_context=self.turns[0])
+        if not self.paper:  # the paper protocol builds every turn at the end (finish_paper)
+            self.builder.on_answer = self._build_ahead
 
     def _parse_response(self, player: Player, response: str) -> str:
         return response if self.paper else parse_code(response)  # the paper protocol reads answers at the end
 
+    def _codes_with(self, code: str) -> list[str]:
+        """The codes of the attempt once this answer's code is in."""
+        return [code] if self.attempts else [*self.codes, code]  # a repair is the complete program
+
+    def _builds(self, codes: list[str]) -> bool:
+        """Whether the attempt ends with these codes: a repair, or the last turn's answer."""
+        return bool(self.attempts) or len(codes) >= len(self.turns)
+
+    def _build_ahead(self, response: str) -> None:
+        """The build this answer will lead to, started as it comes in (answer_builds.start_build)."""
+        codes = self._codes_with(parse_code(response))
+        if self._builds(codes):
+            start_build(self.instance, "\n".join(codes), turn_codes=codes)
+
     def _advance_game(self, player: Player, code: str):
-        if self.attempts:  # a repair: after the first attempt every answer is the complete program
-            self.codes = [code]
-        else:
-            self.codes.append(code)
-            if len(self.codes) < len(self.turns):
-                self.set_context_for(self.builder, self.turns[len(self.codes)])
-                return
+        self.codes = self._codes_with(code)
+        if not self._builds(self.codes):
+            self.set_context_for(self.builder, self.turns[len(self.codes)])
+            return
         if self.paper:
             finish_paper(self, self.instance, self.codes)
             return

@@ -54,7 +54,7 @@ def experiment_fields(episode: dict) -> PaperExperiment:
 
 def instance_fields(episode: dict) -> PaperProtocolEpisode:
     """A game instance of a paper episode (PaperEpisode.to_json()): the episode as it is, plus the
-    board fields our own build and scores read (sartco.clem.core.building.build_for, BuildScorer)."""
+    board fields our own build and scores read (sartco.clem.core.answer_builds.build_for, BuildScorer)."""
     cell = episode["cell"]
     return {**episode, "board_id": episode["id"], "board_type": cell["board"], "object_type": cell["object"],
             "task": cell["task"], "rows": DEFAULT_ROWS, "cols": DEFAULT_COLS,
