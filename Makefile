@@ -41,9 +41,12 @@ main: $(STAMP)
 	PATH="$(abspath $(BIN)):$$PATH" RESULTS="$(RESULTS)" bash scripts/main.sh
 
 ## Unit, property and end-to-end tests, on every core (pytest-xdist): each test file on one worker,
-## the longest files first (tests/conftest.py); ends with the 15 slowest tests.
+## the longest files first (tests/conftest.py); ends with the 15 slowest tests. One worker more
+## than cores: a fifth of the tests' time is spent waiting (servers' latency and timeouts, a child
+## process), and the extra worker fills it (docs/testing.md).
+TEST_WORKERS ?= $(shell expr $$(nproc) + 1)
 test: $(STAMP)
-	$(BIN)/python -m pytest -n auto --dist loadfile --no-loadscope-reorder --durations=15
+	$(BIN)/python -m pytest -n $(TEST_WORKERS) --dist loadfile --no-loadscope-reorder --durations=15
 
 ## The sandbox's tests (tests/program) on Python 3.12 too, in a venv of its own (.venv-py312, the
 ## dev extra, constraints.txt), so that a program gets the same verdict on every interpreter the
