@@ -64,11 +64,15 @@ sys.exit(stage(sys.argv[2], sys.stdin.buffer, sys.stdout.buffer))
 """
 
 
+def floor_command(n: int, core: int = 0) -> list[str]:
+    return [sys.executable, "-S", "-c", _FLOOR, str(n), str(core)]
+
+
 def floor(n: int, core: int = 0) -> tuple[float, float, int]:
     """Wall and CPU seconds and page faults of a bare `python -S` forking and reaping n children
     on one core (libc's fork(); each child only _exit(0)s)."""
-    out = subprocess.run([sys.executable, "-S", "-c", _FLOOR, str(n), str(core)], capture_output=True, text=True,
-                         check=True, env={**os.environ, "PYTHONHASHSEED": HASH_SEED})
+    out = subprocess.run(floor_command(n, core), capture_output=True, text=True, check=True,
+                         env={**os.environ, "PYTHONHASHSEED": HASH_SEED})
     wall, cpu, faults = out.stdout.split()
     return float(wall), float(cpu), int(faults)
 
@@ -166,18 +170,34 @@ def _faults() -> int:
                                                                             resource.RUSAGE_CHILDREN)))
 
 
+def stage_job(sources: list[str]) -> tuple[list[str], bytes]:
+    """The programs that run (the parent compiles each; the refused ones never reach a child) and a
+    stage process's input for them: the filter, then a line per program."""
+    import base64
+
+    items = [compiled.prepare(s, Limits()) for s in sources]
+    kept = [(s, item) for s, item in zip(sources, items) if type(item) is bytes]
+    return [s for s, _ in kept], base64.b64encode(compile_filter()) + b"\n" + b"".join(
+        json.dumps([s, item.decode()]).encode() + b"\n" for s, item in kept if type(item) is bytes)
+
+
+def stage_command(name: str, core: int = 0) -> list[str]:
+    """The command of a stage process (its input: stage_job's; its environment: stage_env's)."""
+    return [sys.executable, *ISOLATED, "-c", _STAGE, str(IMPORT_ROOT), name, str(core)]
+
+
+def stage_env() -> dict[str, str]:
+    return {k: v for k, v in os.environ.items() if not k.startswith("PYTHON")} | {"PYTHONHASHSEED": HASH_SEED}
+
+
 def breakdown(sources: list[str], rounds: int = 3, core: int = 0) -> dict[str, float]:
     """Median CPU ms per program of each stage over `rounds` rounds (stages alternate within a
     round), and of the parent's compile and verdict."""
     import base64
 
     limits = Limits()
-    items = [compiled.prepare(s, limits) for s in sources]
-    kept = [(s, item) for s, item in zip(sources, items) if type(item) is bytes]  # the programs that run
-    sources = [s for s, _ in kept]
-    job = base64.b64encode(compile_filter()) + b"\n" + b"".join(
-        json.dumps([s, item.decode()]).encode() + b"\n" for s, item in kept if type(item) is bytes)
-    env = {k: v for k, v in os.environ.items() if not k.startswith("PYTHON")} | {"PYTHONHASHSEED": HASH_SEED}
+    sources, job = stage_job(sources)
+    env = stage_env()
     seen: dict[str, list[float]] = {name: [] for name in (*STAGES, *(f"{s} faults" for s in STAGES),
                                                           "parent: compile", "parent: verdict")}
     for _ in range(rounds):
@@ -186,8 +206,7 @@ def breakdown(sources: list[str], rounds: int = 3, core: int = 0) -> dict[str, f
         seen["floor faults"].append(faults / len(sources))
         answers: list[bytes] = []
         for name in STAGES[1:]:
-            out = subprocess.run([sys.executable, *ISOLATED, "-c", _STAGE, str(IMPORT_ROOT), name, str(core)],
-                                 input=job, capture_output=True, check=True, env=env, cwd="/").stdout.splitlines()
+            out = subprocess.run(stage_command(name, core), input=job, capture_output=True, check=True, env=env, cwd="/").stdout.splitlines()
             ms, faults = json.loads(out[-1])
             seen[name].append(ms)
             seen[name + " faults"].append(faults)
