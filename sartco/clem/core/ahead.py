@@ -4,7 +4,7 @@ episode then), and when an answer comes in, while clemcore steps the round's oth
 step then finds it done instead of doing it while the model server waits.
 Today: the probes' gold draws (probes.draw_ahead) and the gold program's CodeBLEU analysis
 (metrics.analyse_gold) at the setup, and an answer's build when the answer comes in
-(building.start_build: clemcore's batchwise runner hands a round's answers to their players
+(answer_builds.start_build: clemcore's batchwise runner hands a round's answers to their players
 before it steps the first episode). The work is the step's own, memoised: done ahead or not, the results
 are the same; whatever it raises is left to the step, which does it again.
 

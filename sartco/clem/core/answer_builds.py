@@ -26,6 +26,7 @@ from sartco.world import ErrorCode
 from . import ahead, building
 from .building import BuildRecord, sandbox_fault
 
+
 def build_for(instance: Mapping[str, Any], builder_code: str, turn_codes: list[str] | None = None) -> BuildRecord:
     """`build` with the target, given code and board size of a game instance (the fields of
     sartco.clem.core.instance_files.board_fields); HarnessFault when the sandbox failed (harness_error).
@@ -47,7 +48,7 @@ def build_for(instance: Mapping[str, Any], builder_code: str, turn_codes: list[s
 
 def _build_for(instance: Mapping[str, Any], builder_code: str, turn_codes: list[str] | None) -> BuildRecord:
     return building.build(builder_code, instance["target"], given_code=instance["given_code"],
-                 rows=instance["rows"], cols=instance["cols"], turn_codes=turn_codes)
+                          rows=instance["rows"], cols=instance["cols"], turn_codes=turn_codes)
 
 
 # builds started when their answer came in, by what decides them (STARTED at most: an answer
