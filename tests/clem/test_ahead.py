@@ -45,11 +45,11 @@ def _episode():
     return next(ep for e in data["experiments"] for ep in e["game_instances"] if ep["task"] == "optimal_function")
 
 
-def _begun(answer_builds) -> None:
-    """Wait until the one build started has begun on its lane (a step drops one that has not)."""
+def _begun(answer_builds, episode, code) -> None:
+    """Wait until the build started for `code` has begun on its lane (a step drops one that has not)."""
     import time
 
-    (future,) = answer_builds._started.values()
+    future = answer_builds._started[answer_builds._build_key(episode, code, [code])]
     while not (future.running() or future.done()):
         time.sleep(0.001)
 
@@ -74,9 +74,10 @@ def test_a_build_started_when_its_answer_came_in_is_the_one_the_step_takes(monke
     assert built_in == ["MainThread"] and own.es == 1
     answer_builds.start_build(episode, code, turn_codes=codes)
     answer_builds.start_build(episode, code, turn_codes=codes)   # once per answer
-    _begun(answer_builds)
+    _begun(answer_builds, episode, code)
     assert answer_builds.build_for(episode, code, turn_codes=codes).to_json() == own.to_json()
-    assert built_in[1:] == ["sartco-ahead-answers"] and not answer_builds._started
+    assert built_in[1:] == ["sartco-ahead-answers"]
+    assert answer_builds._build_key(episode, code, codes) not in answer_builds._started   # taken
 
     held, release = threading.Event(), threading.Event()
     ahead.submit(lambda: held.set() or release.wait(60), lane="answers")   # the lane is busy
@@ -93,6 +94,6 @@ def test_a_build_started_when_its_answer_came_in_is_the_one_the_step_takes(monke
 
     monkeypatch.setattr(building, "build", failing)
     answer_builds.start_build(episode, code, turn_codes=codes)
-    _begun(answer_builds)
+    _begun(answer_builds, episode, code)
     assert answer_builds.build_for(episode, code, turn_codes=codes).to_json() == own.to_json()
     assert built_in[-1] == "MainThread" and len(built_in) == 4
