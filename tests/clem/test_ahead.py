@@ -49,7 +49,7 @@ def _begun(answer_builds, episode, code) -> None:
     """Wait until the build started for `code` has begun on its lane (a step drops one that has not)."""
     import time
 
-    future = answer_builds._started[answer_builds._build_key(episode, code, [code])]
+    future = answer_builds._started._futures[answer_builds._build_key(episode, code, [code])]
     while not (future.running() or future.done()):
         time.sleep(0.001)
 
@@ -77,7 +77,7 @@ def test_a_build_started_when_its_answer_came_in_is_the_one_the_step_takes(monke
     _begun(answer_builds, episode, code)
     assert answer_builds.build_for(episode, code, turn_codes=codes).to_json() == own.to_json()
     assert built_in[1:] == ["sartco-ahead-answers"]
-    assert answer_builds._build_key(episode, code, codes) not in answer_builds._started   # taken
+    assert answer_builds._build_key(episode, code, codes) not in answer_builds._started._futures   # taken
 
     held, release = threading.Event(), threading.Event()
     ahead.submit(lambda: held.set() or release.wait(60), lane="answers")   # the lane is busy
@@ -97,3 +97,23 @@ def test_a_build_started_when_its_answer_came_in_is_the_one_the_step_takes(monke
     _begun(answer_builds, episode, code)
     assert answer_builds.build_for(episode, code, turn_codes=codes).to_json() == own.to_json()
     assert built_in[-1] == "MainThread" and len(built_in) == 4
+
+
+def test_a_process_forked_while_work_was_started_takes_none_of_it_and_starts_its_own():
+    """A process forked (a trainer's own multiprocessing) while the parent held a Started's lock
+    and had work started there: the child has a lock of its own, nothing started (the parent's
+    futures would never end in it: their thread is not forked), and starts and takes its own."""
+    from fork_helpers import forked_while_held
+
+    started = ahead.Started("test-fork", 8)
+    release = threading.Event()
+    started.start("parent's", lambda: release.wait(60))   # running in the parent when it forks
+
+    def own() -> bool:
+        nothing = len(started) == 0 and started.take("parent's", wait_queued=True) is None
+        started.start("child's", lambda: "mine")
+        return nothing and started.take("child's", wait_queued=True) == "mine"
+
+    assert forked_while_held(started._lock, own, seconds=60) == 0
+    release.set()
+    assert started.take("parent's", wait_queued=True) is True   # the parent's own work, taken in the parent

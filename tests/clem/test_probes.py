@@ -182,39 +182,15 @@ print(len(probes._ahead))
 def test_a_process_forked_while_the_drawer_held_its_lock_draws(optimal):
     """A process forked (sartco suite's workers, clem eval's tables) while the parent's drawer
     held the draws' lock gets a lock of its own and a drawer of its own, and draws."""
-    import threading
-    import time
+    from fork_helpers import forked_while_held
 
     from sartco.clem.core import probes
 
     want = json.dumps(probes.gold_draws(optimal).draws)
-    held, release = threading.Event(), threading.Event()
 
-    def drawer_inside_keep():
-        with probes._drawn_lock:
-            held.set()
-            release.wait(60)
+    def draws() -> bool:
+        probes._drawn.clear()
+        probes.draw_ahead(optimal)
+        return json.dumps(probes.gold_draws(optimal).draws) == want
 
-    thread = threading.Thread(target=drawer_inside_keep)
-    thread.start()
-    held.wait(60)
-    pid = os.fork()
-    if pid == 0:   # the child: the lock above is held by a thread it does not have
-        try:
-            probes._drawn.clear()
-            probes.draw_ahead(optimal)
-            os._exit(0 if json.dumps(probes.gold_draws(optimal).draws) == want else 1)
-        finally:
-            os._exit(2)
-    release.set()
-    thread.join()
-    for _ in range(1200):   # the child's own sandbox starts: seconds; a deadlock: never
-        done, status = os.waitpid(pid, os.WNOHANG)
-        if done:
-            break
-        time.sleep(0.1)
-    else:
-        os.kill(pid, 9)
-        os.waitpid(pid, 0)
-        raise AssertionError("the forked process hung on the draws' lock")
-    assert os.waitstatus_to_exitcode(status) == 0
+    assert forked_while_held(probes._drawn_lock, draws) == 0   # the child's own sandbox starts: seconds

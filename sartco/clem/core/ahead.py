@@ -8,16 +8,18 @@ Today: the probes' gold draws (probes.draw_ahead) and the gold program's CodeBLE
 before it steps the first episode). The work is the step's own, memoised: done ahead or not, the results
 are the same; whatever it raises is left to the step, which does it again.
 
-A daemon thread per lane takes its work in order. At exit (an interrupted run) the
-work still queued is dropped, not done. A forked process gets its own queue and no thread (a
-thread is not forked)."""
+A daemon thread per lane takes its work in order (`submit`); `Started` keeps what was started by
+what decides it, for the step that takes it. At exit (an interrupted run) the work still queued
+is dropped, not done. A forked process gets its own queues, no thread (a thread is not forked),
+nothing started and locks that no thread holds."""
 from __future__ import annotations
 
 import atexit
 import os
 import queue
 import threading
-from collections.abc import Callable
+from collections import OrderedDict
+from collections.abc import Callable, Hashable
 from concurrent.futures import Future
 
 import sartco.program.pool  # noqa: F401  its shutdown registered first, so that _stop runs before it
@@ -74,3 +76,47 @@ def _stop() -> None:
     with _lock:
         for future in _pending:
             future.cancel()
+
+
+class Started:
+    """Work started ahead on a lane, by what decides it (its key), for the step that needs it.
+    `start(key, work)` queues work() once per key; `take(key, wait_queued)` forgets the key and
+    gives the step work()'s result once it has ended, waiting for it if it has begun (or, with
+    wait_queued, while it is still queued; else the queued work is dropped). None: nothing was
+    started, the work was dropped, or it raised (the step then does the work itself, and meets
+    what it raises). The `most` newest keys are kept (an older one's queued work is dropped)."""
+
+    def __init__(self, lane: str, most: int):
+        self.lane, self.most = lane, most
+        self._lock = threading.Lock()
+        self._futures: OrderedDict[Hashable, Future] = OrderedDict()
+        os.register_at_fork(after_in_child=self._forked)
+
+    def __len__(self) -> int:
+        with self._lock:
+            return len(self._futures)
+
+    def start(self, key: Hashable, work: Callable[[], object]) -> None:
+        with self._lock:
+            if key in self._futures:
+                return
+            future = submit(work, self.lane)
+            if future is None:
+                return
+            self._futures[key] = future
+            while len(self._futures) > self.most:
+                self._futures.popitem(last=False)[1].cancel()
+
+    def take(self, key: Hashable, wait_queued: bool) -> object | None:
+        with self._lock:
+            future = self._futures.pop(key, None)
+        if future is None or (not wait_queued and future.cancel()):
+            return None
+        try:
+            return future.result()
+        except BaseException:  # raised there, or dropped at exit: the step does the work itself
+            return None
+
+    def _forked(self) -> None:
+        self._lock = threading.Lock()
+        self._futures.clear()

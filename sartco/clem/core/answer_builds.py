@@ -14,10 +14,7 @@ record is the same either way.
 from __future__ import annotations
 
 import json
-import threading
-from collections import OrderedDict
 from collections.abc import Mapping
-from concurrent.futures import Future
 from functools import partial
 from typing import Any
 
@@ -32,14 +29,8 @@ def build_for(instance: Mapping[str, Any], builder_code: str, turn_codes: list[s
     sartco.clem.core.instance_files.board_fields); HarnessFault when the sandbox failed (harness_error).
     A build started when the answer came in (`start_build`) is waited for if it has begun (else
     dropped), and built again here if it failed there."""
-    key = _build_key(instance, builder_code, turn_codes)
-    with _started_lock:
-        started = _started.pop(key, None)
-    record = None
-    if started is not None and not started.cancel():  # begun: wait for it (what it raised is not kept)
-        if started.exception() is None:
-            record = started.result()
-    if record is None or record.error == ErrorCode.HARNESS_ERROR:
+    record = _started.take(_build_key(instance, builder_code, turn_codes), wait_queued=False)
+    if not isinstance(record, BuildRecord) or record.error == ErrorCode.HARNESS_ERROR:
         record = _build_for(instance, builder_code, turn_codes)
     if record.error == ErrorCode.HARNESS_ERROR:
         raise sandbox_fault(record)
@@ -51,11 +42,10 @@ def _build_for(instance: Mapping[str, Any], builder_code: str, turn_codes: list[
                           rows=instance["rows"], cols=instance["cols"], turn_codes=turn_codes)
 
 
-# builds started when their answer came in, by what decides them (STARTED at most: an answer
-# whose step builds something else leaves its entry until it is pushed out)
+# builds started when their answer came in (STARTED at most: an answer whose step builds
+# something else leaves its build until it is pushed out)
 STARTED = 1024
-_started: OrderedDict[str, Future] = OrderedDict()
-_started_lock = threading.Lock()
+_started = ahead.Started("answers", STARTED)
 
 
 def _build_key(instance: Mapping[str, Any], builder_code: str, turn_codes: list[str] | None) -> str:
@@ -68,13 +58,4 @@ def start_build(instance: Mapping[str, Any], builder_code: str, turn_codes: list
     comes in: clemcore's batchwise runner hands a round's answers to their players before it steps
     the first of its episodes, so the sandbox builds the later ones while the earlier are stepped.
     The same build as the step's (build_for takes it)."""
-    key = _build_key(instance, builder_code, turn_codes)
-    with _started_lock:
-        if key in _started:
-            return
-        future = ahead.submit(partial(_build_for, instance, builder_code, turn_codes), lane="answers")
-        if future is None:
-            return
-        _started[key] = future
-        while len(_started) > STARTED:
-            _started.popitem(last=False)[1].cancel()
+    _started.start(_build_key(instance, builder_code, turn_codes), partial(_build_for, instance, builder_code, turn_codes))

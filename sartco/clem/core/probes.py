@@ -43,8 +43,8 @@ import os
 import random
 import threading
 from collections import OrderedDict
-from concurrent.futures import Future, wait
 from dataclasses import dataclass
+from functools import partial
 
 from sartco import settings
 from sartco.episode import PROBES_KEY
@@ -133,10 +133,7 @@ def gold_draws(instance: dict, seed: int = PROBE_SEED) -> GoldDraws:
     gold_name, k, key = _plan(instance, seed)
     if gold_name is None:
         raise HarnessFault("probes: the gold program calls no function")
-    with _drawn_lock:
-        started = _ahead.get(key)
-    if started is not None:
-        wait([started])  # what it raised (or a cancel) is not kept: a failed draw is drawn again below, in the step
+    _ahead.take(key, wait_queued=True)  # what it raised is not kept: a failed draw is drawn again below, in the step
     with _drawn_lock:
         known = _drawn.get(key)
     if known is not None:
@@ -164,8 +161,9 @@ def _draw(instance: dict, gold_name: str, k: int, seed: int, key: tuple) -> Gold
     return drawn
 
 
-# draws started at an episode's setup (ahead.py), by their key
-_ahead: dict[tuple, Future] = {}
+# draws started at an episode's setup (ahead.py), by their key (gold_draws takes them; one whose
+# step probes nothing, e.g. an answer without code, stays until DRAWS newer ones push it out)
+_ahead = ahead.Started("setup", DRAWS)
 
 
 def draw_ahead(instance: dict, seed: int = PROBE_SEED) -> None:
@@ -177,28 +175,16 @@ def draw_ahead(instance: dict, seed: int = PROBE_SEED) -> None:
         return
     if gold_name is None:
         return
-
-    def draw() -> None:
-        try:
-            _draw(instance, gold_name, k, seed, key)
-        finally:
-            with _drawn_lock:
-                _ahead.pop(key, None)
-
     with _drawn_lock:
-        if key in _drawn or key in _ahead:
+        if key in _drawn:
             return
-        future = ahead.submit(draw)
-        if future is not None:
-            _ahead[key] = future
+    _ahead.start(key, partial(_draw, instance, gold_name, k, seed, key))
 
 
 def _forked() -> None:
-    """In a forked child: no draw pending, and a lock that no thread holds (the parent's drawer
-    may have held it at the fork)."""
+    """In a forked child: a lock that no thread holds (the parent's drawer may have held it at the fork)."""
     global _drawn_lock
     _drawn_lock = threading.Lock()
-    _ahead.clear()
 
 
 os.register_at_fork(after_in_child=_forked)
