@@ -21,8 +21,8 @@ killed at exit or by `close()`. After a fork the child starts its own.
 from __future__ import annotations
 
 import atexit
-import copy
 import json
+import marshal
 import os
 import threading
 from collections import OrderedDict
@@ -56,21 +56,27 @@ class LocalSandbox:
         self._templates: list[TemplateHandle] = []
         self._pid = os.getpid()
         self._lock = threading.Lock()
-        self._memo: OrderedDict[MemoKey, Execution] = OrderedDict()
+        # the kept verdicts, cells marshalled: each recall makes its own copy (a caller may change
+        # it), and this copy costs a tenth of copy.deepcopy's
+        self._memo: OrderedDict[MemoKey, tuple[bool, ErrorCode | None, str, bytes, int]] = OrderedDict()
         self._memo_lock = threading.Lock()
 
     def _recall(self, key: MemoKey) -> Execution | None:
         with self._memo_lock:
-            ex = self._memo.get(key)
-            if ex is not None:
+            kept = self._memo.get(key)
+            if kept is not None:
                 self._memo.move_to_end(key)
-        return None if ex is None else Execution(ex.ok, ex.error, ex.message, copy.deepcopy(ex.cells), ex.puts)
+        if kept is None:
+            return None
+        ok, error, message, cells, puts = kept
+        return Execution(ok, error, message, marshal.loads(cells), puts)
 
     def _remember(self, key: MemoKey, ex: Execution) -> None:
         if ex.error in TRANSIENT:
             return
+        kept = (ex.ok, ex.error, ex.message, marshal.dumps(ex.cells), ex.puts)
         with self._memo_lock:
-            self._memo[key] = Execution(ex.ok, ex.error, ex.message, copy.deepcopy(ex.cells), ex.puts)
+            self._memo[key] = kept
             while len(self._memo) > MEMO:
                 self._memo.popitem(last=False)
 
