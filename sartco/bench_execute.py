@@ -140,13 +140,17 @@ def run(args) -> int:
         print(f"  where a program's CPU goes (median of {max(1, args.repeat)} rounds, {len(firsts)} distinct programs, "
               f"one core; sartco.program.costs):")
         before = 0.0
-        for name in costs.STAGES[:-1]:
+        for name in costs.STAGES[:4]:
             print(f"    {name:<24}{parts[name]:6.2f} ms  (+{parts[name] - before:5.2f})  {parts[name + ' faults']:6.0f} page faults")
             before = parts[name]
-        name = "compiled in the child"
-        print(f"    {name:<24}{parts[name]:6.2f} ms           {parts[name + ' faults']:6.0f} page faults  (before issue 46)")
+        for name, said in (("compiled in the child", "before issue 46"),
+                           ("least", "a confined child forked straight from a template, no zygote, no job sent")):
+            print(f"    {name:<24}{parts[name]:6.2f} ms           {parts[name + ' faults']:6.0f} page faults  ({said})")
         for name in ("parent: compile", "parent: verdict"):
             print(f"    {name:<24}{parts[name]:6.2f} ms")
+        most = 2 * parts["floor"] / (parts["least"] + parts["parent: compile"] + parts["parent: verdict"])
+        print(f"  the most a fresh confined process per program allows on two cores: ratio to the floor {most:.2f} "
+              f"(2 x floor / (least + the parent's compile and verdict))")
     print(f"  (load average {os.getloadavg()[0]:.1f} now)")
     shutdown()
     return 0

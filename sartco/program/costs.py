@@ -12,23 +12,26 @@ program:
   program   Template.fork of the program as the parent compiled it (runtime.answer_item): load
             the code, run it, check the board, write the answer, exit: the child as it runs now
   compiled in the child   the same, parsed, checked and compiled in the child (before issue 46)
+  least     a confined child forked straight from the template: it forks with libc's fork, the
+            program already in its memory (no zygote, no job sent, no clock, no pidfd); the child
+            runs the same code as a template's (Template._child: descriptors, rlimits, filter,
+            CONFINED, the program, its answer), the template reads the pipe to its end and reaps
+            it. What a fresh confined process per program costs, less the zygote and the job
 The parent's side is timed in the calling process (warm, no fork): compiled.prepare (parse,
 check, instrument, compile, marshal) and verdict.decide (replay the answer's log on the parent's
-board). A stage process runs as a template does (handle.ISOLATED, PYTHONHASHSEED=0) and reads
-its programs line by line, as a template reads a chunk.
+board). A stage process (child/stages.py) runs as a template does (handle.ISOLATED,
+PYTHONHASHSEED=0, a template's imports and no more) and reads its programs line by line, as a
+template reads a chunk; stage "least" reads them all before its imports.
 """
 from __future__ import annotations
 
 import json
 import os
-import resource
 import statistics
 import subprocess
 import sys
 import time
 from pathlib import Path
-from functools import partial
-from typing import BinaryIO
 
 from sartco.settings import IMPORT_ROOT
 
@@ -36,10 +39,10 @@ from . import compiled
 from .child.confine import compile_filter
 from .handle import HASH_SEED, ISOLATED
 from .pool import local
-from .execution import MODULE, Limits
+from .execution import Limits
 from .verdict import decide
 
-STAGES = ("floor", "template", "walls", "program", "compiled in the child")
+STAGES = ("floor", "template", "walls", "program", "compiled in the child", "least")
 _FLOOR = """
 import ctypes, os, resource, sys
 os.sched_setaffinity(0, {int(sys.argv[2])})
@@ -59,7 +62,7 @@ _STAGE = """
 import os, sys
 sys.path.insert(0, sys.argv[1])
 os.sched_setaffinity(0, {int(sys.argv[3])})
-from sartco.program.costs import stage
+from sartco.program.child.stages import stage
 sys.exit(stage(sys.argv[2], sys.stdin.buffer, sys.stdout.buffer))
 """
 
@@ -75,69 +78,6 @@ def floor(n: int, core: int = 0) -> tuple[float, float, int]:
                          env={**os.environ, "PYTHONHASHSEED": HASH_SEED})
     wall, cpu, faults = out.stdout.split()
     return float(wall), float(cpu), int(faults)
-
-
-def stage(name: str, inp: BinaryIO, out: BinaryIO) -> int:
-    """In a stage process, as a template reads and answers: the filter (a line of base64), then a
-    line per program (JSON [source, item]); writes the answer of each (stage "program": base64;
-    the others: an empty line), then the CPU ms and page faults per program (JSON). The
-    zygotes are ended and reaped before the count, so that their children's CPU is in it."""
-    import base64
-
-    from .child.template import Template
-    from .child.zygote import Zygote
-
-    template = Template(base64.b64decode(inp.readline()))
-    template.start()
-    limits = Limits()
-    bare = Zygote(_exit_at_once) if name == "template" else None
-
-    def run(source: str, item: bytes) -> bytes:
-        if bare is not None:
-            read, write = os.pipe()
-            pidfd = bare.fork(None, write)
-            os.close(write)
-            bare.status()  # the zygote waits for it
-            for fd in (pidfd, read):
-                os.close(fd)
-            return b""
-        work = {"walls": partial(_nothing), "program": partial(_program, item, limits),
-                "compiled in the child": partial(_compiled_in_the_child, source, limits)}[name]
-        return template.fork(work, limits)[2]
-
-    start, faults, n = os.times(), _faults(), 0
-    while line := inp.readline():
-        source, item = json.loads(line)
-        out.write(base64.b64encode(run(source, item.encode())) + b"\n")
-        n += 1
-    for zygote in (template.zygote, bare):
-        if zygote is not None:
-            os.close(zygote.ask)
-            os.waitpid(zygote.pid, 0)
-    end, faults = os.times(), _faults() - faults
-    out.write(json.dumps([(sum(end[:4]) - sum(start[:4])) / max(1, n) * 1e3, faults / max(1, n)]).encode() + b"\n")
-    return 0
-
-
-# what a stage's children run (pickled to them by reference: module-level functions)
-def _exit_at_once(job: object, answer: int) -> None:
-    os._exit(0)
-
-
-def _nothing() -> bytes:
-    return b""
-
-
-def _program(item: bytes, limits: Limits) -> bytes:
-    from .child import runtime
-
-    return runtime.answer_item(item, 8, 8, limits, MODULE)
-
-
-def _compiled_in_the_child(source: str, limits: Limits) -> bytes:
-    from .child import runtime
-
-    return runtime.answer(runtime.compile_program(source, limits), 8, 8, limits, MODULE)
 
 
 def usage(pids: list[int]) -> tuple[float, int]:
@@ -162,12 +102,6 @@ def templates_cpu() -> float:
     they reaped: what getrusage's RUSAGE_CHILDREN never sees (a killed template's tree is not
     reaped by this process)."""
     return usage(local().pids())[0]
-
-
-def _faults() -> int:
-    """Page faults (minor and major) of this process and of the children it reaped."""
-    return sum(r.ru_minflt + r.ru_majflt for r in map(resource.getrusage, (resource.RUSAGE_SELF,
-                                                                            resource.RUSAGE_CHILDREN)))
 
 
 def stage_job(sources: list[str]) -> tuple[list[str], bytes]:

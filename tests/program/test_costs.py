@@ -1,11 +1,15 @@
 """costs.templates_cpu: the CPU of every program's process is counted where benchmarks read it
 (`sartco bench-execute`, `sartco bench-reward`). getrusage(RUSAGE_CHILDREN) never sees it: a
 program's process is reaped by its zygote, and a template's tree is killed, not reaped, by this
-process."""
+process. And the breakdown's stages "program" and "least" run the programs they are timed on."""
+import base64
+import json
+import subprocess
 import time
 
 from sartco.clock import cpu_seconds
 from sartco.program import execute_many, shutdown
+from sartco.program import costs
 from sartco.program.costs import templates_cpu
 
 WORK = "sum(range(400000))"
@@ -25,3 +29,22 @@ def test_templates_cpu_counts_the_programs_processes():
         assert cpu_seconds() - here < 0.5 * own   # and not in this process or its reaped children
     finally:
         shutdown()
+
+
+def test_the_least_stage_answers_as_the_program_stage():
+    sources = ["put(board, 'screw', 'red', 0, 0)", "for x in range(3):\n    put(board, 'nut', 'blue', x, 1)",
+               "put(board, 'screw', 'pink', 0, 0)", "x = 1 / 0"]
+    kept, job = costs.stage_job(sources)
+    assert kept == sources
+    answers = {}
+    for name in ("program", "least"):
+        done = subprocess.run(costs.stage_command(name), input=job, capture_output=True, env=costs.stage_env(),
+                              cwd="/", timeout=120)
+        assert done.returncode == 0, done.stderr
+        lines = done.stdout.splitlines()
+        ms, faults = json.loads(lines[-1])
+        assert ms > 0 and faults > 0
+        answers[name] = [json.loads(base64.b64decode(line)) for line in lines[:-1]]
+    assert answers["least"] == answers["program"]
+    assert [a[0] for a in answers["least"]] == [True, True, False, False]   # each ran: two built, two failed
+    assert answers["least"][1][-1] == ["nut", "blue", 0, 1, "nut", "blue", 1, 1, "nut", "blue", 2, 1]

@@ -6,6 +6,8 @@ import json
 import subprocess
 import sys
 
+import pytest
+
 from sartco.program import handle
 
 PARENTS = {"sartco.program.pool", "sartco.program.handle", "sartco.program.sandbox", "sartco.program.cluster",
@@ -13,10 +15,12 @@ PARENTS = {"sartco.program.pool", "sartco.program.handle", "sartco.program.sandb
            "tempfile", "pyseccomp"}
 
 
-def test_the_template_imports_none_of_the_parents_modules():
-    # the template's own start (handle._BOOT) up to its frozen heap, with a filter it never applies
+@pytest.mark.parametrize("entry", ["sartco.program.child.template", "sartco.program.child.stages"])
+def test_the_template_imports_none_of_the_parents_modules(entry):
+    # the template's own start (handle._BOOT) up to its frozen heap, with a filter it never applies;
+    # also in a stage process of `sartco bench-execute --breakdown`, which must weigh what a template does
     probe = ("import json, sys; sys.path.insert(0, sys.argv[1]); "
-             "from sartco.program.child.template import Template; Template(bytes(8)); "
+             f"import {entry}; from sartco.program.child.template import Template; Template(bytes(8)); "
              "print(json.dumps(sorted(sys.modules)))")
     done = subprocess.run([sys.executable, *handle.ISOLATED, "-c", probe, handle._ROOT], env=handle.ENVIRONMENT,
                           capture_output=True, text=True, timeout=60)
