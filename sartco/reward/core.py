@@ -11,17 +11,19 @@ from __future__ import annotations
 
 import json
 import math
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from clemcore.clemgame.master import Outcome
 
-from sartco.clem.core.building import BuildRecord, build_answers_many, parse_failure, sandbox_fault
+from sartco.clem.core.building import (BuildRecord, answers_job, build_answers_many, escaped, parse_failure,
+                                       program_of, sandbox_fault)
 from sartco.clem.core.harness import fault_reason
 from sartco.clem.core.errors import HarnessFault
 from sartco.clem.core.outcomes import outcome_for
-from sartco.clem.core.probes import GoldDraws, gold_draws, probed, run_probes_many
+from sartco.clem.core.probes import GoldDraws, gold_draws, probe_programs, probed, run_probes_many
+from sartco.clem.core.sandbox import together
 from sartco.clem.core.scoring import build_scores, probe_scores
 from sartco.errors import UserError
 from sartco.episode import CATEGORY_SEPARATOR, FUNCTION_GENERALISATION, PROBE_CATEGORIES
@@ -140,22 +142,42 @@ def score(pairs: Iterable[tuple[str, str | Sequence[str]]], episodes: Episodes, 
             raise ValueError(f"pair {k}: unknown episode id {key!r} ({len(episodes)} episodes are known)")
         instance = episodes[key]
         items.append((instance, answers_of(key, completion, len(instance["turns"]))))
-    records = build_answers_many(items)
-    results: list[dict | HarnessFault | None] = [None] * len(pairs)
-    jobs, places = [], []
-    for k, ((key, _), record) in enumerate(zip(pairs, records)):
-        instance = episodes[key]
-        if not (probes and probed(instance)) or record.error in (ErrorCode.PARSE_ERROR, ErrorCode.HARNESS_ERROR):
-            continue
-        try:
-            jobs.append((instance, record.builder_code, episodes.gold_draws(key)))
-            places.append(k)
-        except HarnessFault as fault:
-            results[k] = fault
-    for k, result in zip(places, run_probes_many(jobs)):
-        results[k] = result
+    with together(_answer_programs(pairs, items, episodes, probes)):  # one child per answer
+        records = build_answers_many(items)
+        results: list[dict | HarnessFault | None] = [None] * len(pairs)
+        jobs, places = [], []
+        for k, ((key, _), record) in enumerate(zip(pairs, records)):
+            instance = episodes[key]
+            if not (probes and probed(instance)) or record.error in (ErrorCode.PARSE_ERROR, ErrorCode.HARNESS_ERROR):
+                continue
+            try:
+                jobs.append((instance, record.builder_code, episodes.gold_draws(key)))
+                places.append(k)
+            except HarnessFault as fault:
+                results[k] = fault
+        for k, result in zip(places, run_probes_many(jobs)):
+            results[k] = result
     return [reward_of(key, record, probed(episodes[key]) and probes, result)
             for (key, _), record, result in zip(pairs, records, results)]
+
+
+def _answer_programs(pairs: list, items: list[tuple[dict, list[str]]], episodes: Episodes,
+                     probes: bool) -> Iterator[tuple[list[str], int, int]]:
+    """Per answer with code: its build's program and its probe programs, and its board size
+    (sartco.clem.core.sandbox.together runs them in one child; the build and the probes below
+    then take their Executions)."""
+    for (key, _), (instance, answers) in zip(pairs, items):
+        job = answers_job(instance, answers)
+        if isinstance(job, BuildRecord):
+            continue
+        job = escaped(job)
+        programs = [program_of(job)]
+        if probes and probed(instance):
+            try:
+                programs += probe_programs(instance, job.builder_code, episodes.gold_draws(key))[1]
+            except HarnessFault:
+                pass  # the probes below record it
+        yield programs, instance["rows"], instance["cols"]
 
 
 def reward_of(key: str, record: BuildRecord, is_probed: bool, probe_result) -> Reward:

@@ -130,9 +130,8 @@ def build_many(jobs: list[BuildJob]) -> list[BuildRecord]:
     """`build` of many jobs, in input order: one sandbox batch per board size (sartco.clem.core.sandbox)."""
     from .sandbox import judge, run_many
 
-    jobs = [BuildJob(escape(j.builder_code), j.target, escape(j.given_code), j.rows, j.cols,
-                     [escape(code) for code in j.turn_codes] if j.turn_codes else None) for j in jobs]
-    programs = [compose_program(j.builder_code, given_code=j.given_code, rows=j.rows, cols=j.cols) for j in jobs]
+    jobs = [escaped(j) for j in jobs]
+    programs = [program_of(j) for j in jobs]
     executions: list = [None] * len(jobs)
     for (rows, cols), indices in _by_size(jobs).items():
         for i, ex in zip(indices, run_many([programs[i] for i in indices], rows, cols)):
@@ -154,6 +153,17 @@ def build_many(jobs: list[BuildJob]) -> list[BuildRecord]:
             rows=job.rows, cols=job.cols, turn_codes=list(job.turn_codes or [job.builder_code]),
         ))
     return out
+
+
+def escaped(job: BuildJob) -> BuildJob:
+    """The job with its texts escaped (the module's docstring), as build_many runs and records it."""
+    return BuildJob(escape(job.builder_code), job.target, escape(job.given_code), job.rows, job.cols,
+                    [escape(code) for code in job.turn_codes] if job.turn_codes else None)
+
+
+def program_of(job: BuildJob) -> str:
+    """The program an escaped job runs."""
+    return compose_program(job.builder_code, given_code=job.given_code, rows=job.rows, cols=job.cols)
 
 
 def _by_size(jobs) -> dict[tuple[int, int], list[int]]:
@@ -202,28 +212,36 @@ def build_answers(instance: dict, answers: list[str]) -> BuildRecord:
 def build_answers_many(items: list[tuple[dict, list[str]]]) -> list[BuildRecord]:
     """`build_answers` of many (instance, answers) pairs in one sandbox batch per board size, in
     input order; a build the sandbox failed is returned as its harness_error record, not raised."""
-    from .errors import ParseError
-    from .parsing import parse_code
-
     out: list[BuildRecord | None] = [None] * len(items)
     jobs, places = [], []
     for k, (instance, answers) in enumerate(items):
-        codes = []
-        for answer in answers:
-            try:
-                codes.append(parse_code(answer))
-            except ParseError as error:
-                out[k] = parse_failure_for(instance, error.reason or "no code found", turn_codes=codes)
-                break
+        job = answers_job(instance, answers)
+        if isinstance(job, BuildRecord):
+            out[k] = job
         else:
-            jobs.append(BuildJob("\n".join(codes), instance["target"], instance["given_code"], instance["rows"],
-                                 instance["cols"], codes))
+            jobs.append(job)
             places.append(k)
     for k, record in zip(places, build_many(jobs)):
         out[k] = record
     if any(record is None for record in out):
         raise RuntimeError("build_answers_many: an item got no record")
     return cast("list[BuildRecord]", out)
+
+
+def answers_job(instance: dict, answers: list[str]) -> BuildJob | BuildRecord:
+    """The build of a dialogue's answers (build_answers): the code sartco.clem.core.parsing finds
+    in each, joined; or the parse failure of the first answer without code."""
+    from .errors import ParseError
+    from .parsing import parse_code
+
+    codes = []
+    for answer in answers:
+        try:
+            codes.append(parse_code(answer))
+        except ParseError as error:
+            return parse_failure_for(instance, error.reason or "no code found", turn_codes=codes)
+    return BuildJob("\n".join(codes), instance["target"], instance["given_code"], instance["rows"], instance["cols"],
+                    codes)
 
 
 def record_build(game_master, attempts: list[BuildRecord], *, final: bool, shown: bool = False,

@@ -199,6 +199,15 @@ def run_probes(instance: dict, code: str, seed: int = PROBE_SEED) -> dict:
     return result
 
 
+def probe_programs(instance: dict, code: str, gold: GoldDraws) -> tuple[str | None, list[str]]:
+    """The function an answer's `code` probes and its probe programs, one per gold draw (none
+    when it calls no function)."""
+    given = instance["given_code"]
+    name = probed_function(code, given)
+    return name, [] if name is None else [probe_program(code, name, a, given_code=given, rows=instance["rows"],
+                                                        cols=instance["cols"]) for a, _ in gold.draws]
+
+
 def run_probes_many(jobs: list[tuple[dict, str, GoldDraws]]) -> list[dict | HarnessFault]:
     """`run_probes` of many (instance, answer code, gold draws) in one sandbox batch per board
     size, in input order; an answer whose probe the sandbox failed gets its HarnessFault."""
@@ -208,10 +217,8 @@ def run_probes_many(jobs: list[tuple[dict, str, GoldDraws]]) -> list[dict | Harn
     batches: dict[tuple[int, int], list[str]] = {}
     labels: dict[tuple[int, int], list[int]] = {}
     for job, (instance, code, gold) in enumerate(jobs):
-        given, rows, cols = instance["given_code"], instance["rows"], instance["cols"]
-        name = probed_function(code, given)
-        programs = [] if name is None else [probe_program(code, name, a, given_code=given, rows=rows, cols=cols)
-                                            for a, _ in gold.draws]
+        rows, cols = instance["rows"], instance["cols"]
+        name, programs = probe_programs(instance, code, gold)
         batch = batches.setdefault((rows, cols), [])
         plans.append((name, len(batch), len(programs)))
         batch.extend(programs)
