@@ -3,7 +3,8 @@ its episodes (see the package docstring).
 
 One implementation with the game: the answers are escaped as the game master escapes them
 (sartco.text.escape), read by sartco.clem.core.parsing (building.build_answers_many), run in
-sandbox batches and judged (sartco.clem.core.sandbox), probed as the master probes
+sandbox batches and judged (sartco.clem.core.sandbox; each answer's build and probes in one
+confined child: `together`), probed as the master probes
 (probes.run_probes_many, after the same condition as probes.log_probes) and turned into the
 scores.json names by the scorer's own functions (scoring.build_scores, probe_scores).
 """
