@@ -1,7 +1,8 @@
 """An answer's build and its function probes run in one confined child (sartco.clem.core.sandbox.together,
 as sartco.reward.core.score uses it), with the rewards of a child per program: the gold and the
 erring player's answers, a build that runs out of steps (the programs after it in the child then
-run again, each in its own), a function that draws random numbers, an answer without code."""
+run again, each in its own), a function that draws random numbers, an answer without code; and
+a sandbox that fails them all ahead, after which they run as before."""
 from __future__ import annotations
 
 import contextlib
@@ -13,7 +14,9 @@ import pytest
 from play_helpers import GAMES, fence
 from sartco.clem.core import sandbox
 from sartco.clem.players.answers import instruct_answers
+from sartco.program import Execution
 from sartco.reward import Episodes, core, score
+from sartco.world import ErrorCode
 
 SMOKE = GAMES / "cobot_instruct" / "in" / "instances_smoke.json"
 RANDOM = """import random
@@ -72,3 +75,19 @@ def test_an_answers_build_and_probes_share_one_call_and_one_label(pairs, monkeyp
     assert len(set(labels)) == len(with_code)   # one label, so one child, per answer with code
     sizes = Counter(labels)   # a build alone, or a build and its 8 probes
     assert set(sizes.values()) == {1, 9} and sum(sizes.values()) == len(programs)
+
+
+def test_a_sandbox_failure_ahead_runs_the_programs_again(pairs, monkeypatch):
+    episodes, given = pairs
+    expected = _rewards(episodes, given)
+    real, calls = sandbox.execute_many, []
+
+    def failing_first(programs, rows, cols, **kw):
+        calls.append(len(programs))
+        if len(calls) == 1:   # together's call: the sandbox fails every program
+            return [Execution(False, ErrorCode.HARNESS_ERROR, "sandbox failure: a test's") for _ in programs]
+        return real(programs, rows, cols, **kw)
+
+    monkeypatch.setattr(sandbox, "execute_many", failing_first)
+    assert _rewards(episodes, given) == expected
+    assert len(calls) == 3   # together's, then the builds' and the probes' own

@@ -32,12 +32,13 @@ def run_many(programs: list[str], rows: int, cols: int, *, gold: bool = False,
     local sandbox runs a batch of them in one confined child: sartco.program.child.template, mode "gold").
     `answers`: a label per program, the model answer it is part of (the local sandbox runs one
     answer's programs in one confined child, never with another answer's: mode "answer").
-    Within `together`, a model's program that it ran is not run again."""
+    Within `together`, a model's program that it ran is not run again (unless the sandbox failed
+    it: harness_error)."""
     ran = None if gold else _ran.get()
     if ran is None:
         return execute_many(programs, rows, cols, gold=gold, answers=answers) if programs else []
     out = [ran.get((program, rows, cols)) for program in programs]
-    rest = [i for i, ex in enumerate(out) if ex is None]
+    rest = [i for i, ex in enumerate(out) if ex is None or ex.error == ErrorCode.HARNESS_ERROR]
     if rest:
         labels = None if answers is None else [answers[i] for i in rest]
         for i, ex in zip(rest, execute_many([programs[i] for i in rest], rows, cols, answers=labels)):
@@ -50,8 +51,8 @@ def run_many(programs: list[str], rows: int, cols: int, *, gold: bool = False,
 def together(answers: Iterable[tuple[list[str], int, int]]) -> Iterator[None]:
     """Run the programs of each answer, (programs, rows, cols), in one confined child of its own
     (one sandbox call per board size); within the block, `run_many` takes the Execution of each
-    of those programs on that board size from here. The Executions are those of a child per
-    program (sartco.program.child.batch)."""
+    of those programs on that board size from here (a harness_error runs again there). The
+    Executions are those of a child per program (sartco.program.child.batch)."""
     batches: dict[tuple[int, int], tuple[list[str], list[object]]] = {}
     for label, (programs, rows, cols) in enumerate(answers):
         batch = batches.setdefault((rows, cols), ([], []))
