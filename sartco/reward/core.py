@@ -2,7 +2,7 @@
 its episodes (see the package docstring).
 
 One implementation with the game: the answers are escaped as the game master escapes them
-(sartco.text.escape), read by sartco.clem.core.parsing (building.build_answers_many), run in
+(sartco.text.escape), read by sartco.clem.core.parsing (building.answers_job), run in
 sandbox batches and judged (sartco.clem.core.sandbox; each answer's build and probes in one
 confined child: `together`), probed as the master probes
 (probes.run_probes_many, after the same condition as probes.log_probes) and turned into the
@@ -18,7 +18,7 @@ from pathlib import Path
 
 from clemcore.clemgame.master import Outcome
 
-from sartco.clem.core.building import (BuildRecord, answers_job, build_answers_many, escaped, parse_failure,
+from sartco.clem.core.building import (BuildJob, BuildRecord, answers_job, build_jobs, escaped, parse_failure,
                                        program_of, sandbox_fault)
 from sartco.clem.core.harness import fault_reason
 from sartco.clem.core.errors import HarnessFault
@@ -143,42 +143,33 @@ def score(pairs: Iterable[tuple[str, str | Sequence[str]]], episodes: Episodes, 
             raise ValueError(f"pair {k}: unknown episode id {key!r} ({len(episodes)} episodes are known)")
         instance = episodes[key]
         items.append((instance, answers_of(key, completion, len(instance["turns"]))))
-    with together(_answer_programs(pairs, items, episodes, probes)):  # one child per answer
-        records = build_answers_many(items)
-        results: list[dict | HarnessFault | None] = [None] * len(pairs)
-        jobs, places = [], []
-        for k, ((key, _), record) in enumerate(zip(pairs, records)):
-            instance = episodes[key]
-            if not (probes and probed(instance)) or record.error in (ErrorCode.PARSE_ERROR, ErrorCode.HARNESS_ERROR):
-                continue
+    jobs = [answers_job(instance, answers) for instance, answers in items]  # a record: no code
+    results: list[dict | HarnessFault | None] = [None] * len(pairs)
+    plans: dict[int, tuple[dict, str, GoldDraws]] = {}  # pair -> its probes' job
+    for k, ((key, _), job) in enumerate(zip(pairs, jobs)):
+        if probes and probed(episodes[key]) and isinstance(job, BuildJob):
             try:
-                jobs.append((instance, record.builder_code, episodes.gold_draws(key)))
-                places.append(k)
+                plans[k] = (episodes[key], escaped(job).builder_code, episodes.gold_draws(key))
             except HarnessFault as fault:
                 results[k] = fault
-        for k, result in zip(places, run_probes_many(jobs)):
+    with together(_answer_programs(jobs, plans)):  # one child per answer
+        records = build_jobs(jobs)
+        places = [k for k in plans if records[k].error != ErrorCode.HARNESS_ERROR]
+        for k, result in zip(places, run_probes_many([plans[k] for k in places])):
             results[k] = result
     return [reward_of(key, record, probed(episodes[key]) and probes, result)
             for (key, _), record, result in zip(pairs, records, results)]
 
 
-def _answer_programs(pairs: list, items: list[tuple[dict, list[str]]], episodes: Episodes,
-                     probes: bool) -> Iterator[tuple[list[str], int, int]]:
+def _answer_programs(jobs: list[BuildJob | BuildRecord],
+                     plans: Mapping[int, tuple[dict, str, GoldDraws]]) -> Iterator[tuple[list[str], int, int]]:
     """Per answer with code: its build's program and its probe programs, and its board size
-    (sartco.clem.core.sandbox.together runs them in one child; the build and the probes below
-    then take their Executions)."""
-    for (key, _), (instance, answers) in zip(pairs, items):
-        job = answers_job(instance, answers)
-        if isinstance(job, BuildRecord):
-            continue
-        job = escaped(job)
-        programs = [program_of(job)]
-        if probes and probed(instance):
-            try:
-                programs += probe_programs(instance, job.builder_code, episodes.gold_draws(key))[1]
-            except HarnessFault:
-                pass  # the probes below record it
-        yield programs, instance["rows"], instance["cols"]
+    (sartco.clem.core.sandbox.together runs them in one child; the build and the probes then take
+    their Executions)."""
+    for k, job in enumerate(jobs):
+        if isinstance(job, BuildJob):
+            probe = probe_programs(*plans[k])[1] if k in plans else []
+            yield [program_of(escaped(job)), *probe], job.rows, job.cols
 
 
 def reward_of(key: str, record: BuildRecord, is_probed: bool, probe_result) -> Reward:

@@ -212,19 +212,18 @@ def build_answers(instance: dict, answers: list[str]) -> BuildRecord:
 def build_answers_many(items: list[tuple[dict, list[str]]]) -> list[BuildRecord]:
     """`build_answers` of many (instance, answers) pairs in one sandbox batch per board size, in
     input order; a build the sandbox failed is returned as its harness_error record, not raised."""
-    out: list[BuildRecord | None] = [None] * len(items)
-    jobs, places = [], []
-    for k, (instance, answers) in enumerate(items):
-        job = answers_job(instance, answers)
-        if isinstance(job, BuildRecord):
-            out[k] = job
-        else:
-            jobs.append(job)
-            places.append(k)
-    for k, record in zip(places, build_many(jobs)):
+    return build_jobs([answers_job(instance, answers) for instance, answers in items])
+
+
+def build_jobs(jobs: list[BuildJob | BuildRecord]) -> list[BuildRecord]:
+    """`build_many` of the jobs (answers_job's), in input order; a record (the parse failure of an
+    answer without code) stands for itself."""
+    out: list[BuildRecord | None] = [job if isinstance(job, BuildRecord) else None for job in jobs]
+    places = [k for k, record in enumerate(out) if record is None]
+    for k, record in zip(places, build_many([cast(BuildJob, jobs[k]) for k in places])):
         out[k] = record
     if any(record is None for record in out):
-        raise RuntimeError("build_answers_many: an item got no record")
+        raise RuntimeError("build_jobs: a job got no record")
     return cast("list[BuildRecord]", out)
 
 

@@ -119,8 +119,6 @@ def _preloaded(inp: BinaryIO) -> Iterator[tuple[str, str]]:
     return (("", os.pread(fd, offsets[i + 1] - offsets[i], offsets[i]).decode()) for i in range(len(offsets) - 1))
 
 
-
-
 def _faults() -> int:
     """Page faults (minor and major) of this process and of the children it reaped."""
     return sum(r.ru_minflt + r.ru_majflt for r in map(resource.getrusage, (resource.RUSAGE_SELF,
