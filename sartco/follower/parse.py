@@ -1,10 +1,10 @@
 """Instruction text -> structured records (placements, arrangements), by the tables of grammar.py."""
 from __future__ import annotations
 
-import ast
 import re
 from dataclasses import dataclass
 
+from sartco.syntax import literal
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS
 
 from . import grammar
@@ -165,7 +165,7 @@ def colors_of(text: str) -> tuple[str, ...]:
     m = grammar.COLOR_LIST.search(text)
     if m:
         try:
-            value = ast.literal_eval(m.group("list"))
+            value = literal(m.group("list"))
         except (ValueError, SyntaxError):
             value = None
         if isinstance(value, list) and value and all(isinstance(c, str) for c in value):

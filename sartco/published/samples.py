@@ -14,6 +14,7 @@ import json
 from pathlib import Path
 from typing import Any
 
+from sartco.syntax import literal, parse
 from sartco.dataset import DIALOGUE_KEYS, INSTRUCTION_STYLE, SIMPLE, BoardRecord, instructions_kind
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, LETTERS
 
@@ -83,7 +84,7 @@ def template_stem(template_path: str) -> str:
 
 def _put_calls(code: str) -> list[ast.Call]:
     try:
-        tree = ast.parse(code)
+        tree = parse(code)
     except SyntaxError as exc:
         raise SampleError(f"gold code does not parse: {exc.msg}") from None
     return [n for n in ast.walk(tree) if isinstance(n, ast.Call) and isinstance(n.func, ast.Name) and n.func.id == "put"]
@@ -94,7 +95,7 @@ def _literal_step(step: str) -> tuple[str, str, int, int]:
     calls = _put_calls(step)
     try:
         (call,) = calls
-        shape, color, x, y = (ast.literal_eval(a) for a in call.args[1:5])
+        shape, color, x, y = (literal(a) for a in call.args[1:5])
     except (ValueError, TypeError):
         raise SampleError(f"first-order step is not one literal put: {step!r:.80}") from None
     return shape, color, x, y
@@ -103,13 +104,13 @@ def _literal_step(step: str) -> tuple[str, str, int, int]:
 def _function_shapes(function: str) -> list[str] | None:
     """The `shapes = [...]` list of an object function, or None when it has none."""
     try:
-        tree = ast.parse(function)
+        tree = parse(function)
     except SyntaxError as exc:
         raise SampleError(f"object function does not parse: {exc.msg}") from None
     for node in ast.walk(tree):
         if isinstance(node, ast.Assign) and any(isinstance(t, ast.Name) and t.id == "shapes" for t in node.targets):
             try:
-                value = ast.literal_eval(node.value)
+                value = literal(node.value)
             except ValueError:
                 return None
             return list(value) if isinstance(value, (list, tuple)) else None

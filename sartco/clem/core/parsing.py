@@ -22,6 +22,8 @@ import ast
 import re
 import textwrap
 
+from sartco.syntax import parse
+
 from .answer_lines import (FENCE, LABEL, INLINE, KEYWORD_LINE, PYTHON_TAGS, STATEMENT_LINE, TAIL, code_lines,
                            is_code_line, label_at)
 from .errors import ParseError
@@ -85,7 +87,7 @@ def _block_code(tag: str, block: list[str]) -> str:
     if not looks:
         return ""
     try:
-        ast.parse(code)
+        parse(code)
     except SyntaxError:
         return looks
     return code
@@ -100,12 +102,12 @@ def _usage_calls(fenced: str, outside: str) -> list[str]:
     if not wanted or not outside:
         return []
     try:
-        statements = [(node, ast.get_source_segment(outside, node)) for node in ast.parse(outside).body]
+        statements = [(node, ast.get_source_segment(outside, node)) for node in parse(outside).body]
     except SyntaxError:  # one statement per line then
         statements = []
         for line in outside.split("\n"):
             try:
-                statements += [(node, line.strip()) for node in ast.parse(line.strip()).body]
+                statements += [(node, line.strip()) for node in parse(line.strip()).body]
             except SyntaxError:
                 continue
     # a call with other free names than board and the fenced code's own is the function's

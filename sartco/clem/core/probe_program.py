@@ -5,6 +5,8 @@ from __future__ import annotations
 import ast
 import functools
 
+from sartco.syntax import parse
+
 
 def _top_defs(tree: ast.Module) -> set[str]:
     return {s.name for s in tree.body if isinstance(s, (ast.FunctionDef, ast.AsyncFunctionDef))}
@@ -27,7 +29,7 @@ def _passes_board(call: ast.Call) -> bool:
 
 def _parse(code: str) -> ast.Module | None:
     try:
-        return ast.parse(code)
+        return parse(code)
     except (SyntaxError, ValueError):
         return None
 

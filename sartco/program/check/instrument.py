@@ -13,6 +13,8 @@ from __future__ import annotations
 import ast
 import re
 
+from sartco.syntax import parse
+
 from .allowed import ALLOWED_BUILTINS, EXCEPTIONS, WHAT
 from ..standins.budget import Forbidden
 from ..standins.classes import FILENAME
@@ -113,5 +115,5 @@ def _undefined_attributes(walk: Walk, offences: list):
 
 def prepare(source: str):
     """Parse, check and instrument; return a code object. Raises SyntaxError or Forbidden."""
-    tree = compile(source, FILENAME, "exec", ast.PyCF_ONLY_AST, dont_inherit=True)
+    tree = parse(source, FILENAME)
     return compile(instrument(tree), FILENAME, "exec", dont_inherit=True, optimize=0)  # asserts run, whatever -O
