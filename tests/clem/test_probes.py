@@ -155,6 +155,29 @@ def test_draws_started_at_setup_are_the_ones_the_step_uses(optimal, monkeypatch)
     assert not probes._ahead and len(drew_in) == 3
 
 
+def test_a_plan_that_fails_at_setup_is_made_again_in_the_step(optimal, monkeypatch):
+    """Whatever planning the draws raises at setup (CI once saw a spurious SystemError of
+    CPython's parser there, and clemcore dropped the episode), the setup goes on and the step
+    draws: work ahead never fails an episode."""
+    from sartco.clem.core import probes
+
+    want = json.dumps(probes.gold_draws(optimal).draws)
+    real, calls = probes._plan, []
+
+    def fails_once(*args):
+        calls.append(args)
+        if len(calls) == 1:
+            raise SystemError("AST constructor recursion depth mismatch (before=168, after=30)")
+        return real(*args)
+
+    monkeypatch.setattr(probes, "_plan", fails_once)
+    monkeypatch.setattr(probes, "_drawn", probes.OrderedDict())
+    queued = len(probes._ahead)
+    probes.draw_ahead(optimal)
+    assert len(calls) == 1 and len(probes._ahead) == queued
+    assert json.dumps(probes.gold_draws(optimal).draws) == want and len(calls) == 2
+
+
 def test_draws_still_queued_at_exit_are_dropped(tmp_path):
     """An interrupted run exits at once: the draws its setups queued are not all made first (the
     drawer is a daemon thread, stopped before the sandbox shuts down)."""
