@@ -4,6 +4,7 @@ and give back the episodes the reward API scores. `sartco bench-reward` prints i
 from __future__ import annotations
 
 import json
+import re
 from copy import deepcopy
 
 import pytest
@@ -93,4 +94,6 @@ def test_bench_reward_prints_rewards_per_second(capsys):
     assert out[1].startswith("gold probe draws (once per episode, kept): 6 episodes in ")
     kinds = [line.split()[0] + " " + line.split()[1] for line in out[3:7]]
     assert kinds == ["erring, single-turn", "gold, single-turn", "erring, multi-turn", "gold, multi-turn"]
-    assert out[-1].startswith("single-turn answers, all: ") and "rewards/s with probes" in out[-1]
+    assert out[-2].startswith("single-turn answers, all: ") and "rewards/s with probes" in out[-2]
+    assert re.fullmatch(r"  at the CPU these rewards took, \d+ CPUs fully used would give at most [\d,]+ with "
+                        r"probes, [\d,]+ without", out[-1]), out[-1]
