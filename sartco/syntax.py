@@ -12,18 +12,29 @@ so a model's program could fail for a reason of the harness.
 
 `parse` therefore holds one lock for the whole process, so no two of the project's parses overlap,
 and parses again after the spurious error (a parse outside the project, like the traceback module's
-when it formats an error, can still cut in). Free of dependencies but the standard library's `ast`
-and `_thread` (a template of the sandbox imports it: no `threading` there).
+when it formats an error, can still cut in). A process forked while one of its threads parsed
+gets a lock of its own. Free of dependencies but the standard library's `ast`, `os` and `_thread`
+(a template of the sandbox imports it: no `threading` there).
 """
 from __future__ import annotations
 
 import _thread
 import ast
+import os
 from typing import Any, cast
 
 _LOCK = _thread.RLock()  # re-entrant: a finalizer that parses may run inside a parse of its own thread
 _SPURIOUS = "recursion depth mismatch"
 _ATTEMPTS = 3
+
+
+def _forked() -> None:
+    """In a forked child: a lock that no thread holds (a thread of the parent may have held it at the fork)."""
+    global _LOCK
+    _LOCK = _thread.RLock()
+
+
+os.register_at_fork(after_in_child=_forked)
 
 
 def _parsed(source: str, filename: str, mode: str) -> ast.AST:

@@ -83,6 +83,15 @@ def test_a_parse_of_another_thread_waits_for_the_one_under_way():
     assert ast.dump(tree) == ast.dump(ast.parse(SOURCE))
 
 
+def test_a_process_forked_while_a_thread_parsed_parses():
+    """A process forked (sartco suite's workers, clem eval's tables) while a thread of its parent
+    held the parse lock gets a lock of its own and parses."""
+    from fork_helpers import forked_while_held
+
+    assert forked_while_held(syntax._LOCK, lambda: ast.dump(syntax.parse(OTHER)) == ast.dump(ast.parse(OTHER)),
+                             seconds=20) == 0
+
+
 def test_literal_is_literal_eval():
     assert syntax.literal("  ['red', 'blue']") == ast.literal_eval("  ['red', 'blue']") == ["red", "blue"]
     assert syntax.literal(ast.parse("(1, 'a')", mode="eval").body) == (1, "a")
