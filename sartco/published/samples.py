@@ -14,8 +14,8 @@ import json
 from pathlib import Path
 from typing import Any
 
-from sartco.syntax import literal, parse
 from sartco.dataset import DIALOGUE_KEYS, INSTRUCTION_STYLE, SIMPLE, BoardRecord, instructions_kind
+from sartco.syntax import literal, parse
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, LETTERS
 
 from .defects import Defect, without_stray_prefix
