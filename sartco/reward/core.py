@@ -143,13 +143,15 @@ def score(pairs: Iterable[tuple[str, str | Sequence[str]]], episodes: Episodes, 
             raise ValueError(f"pair {k}: unknown episode id {key!r} ({len(episodes)} episodes are known)")
         instance = episodes[key]
         items.append((instance, answers_of(key, completion, len(instance["turns"]))))
-    jobs = [answers_job(instance, answers) for instance, answers in items]  # a record: no code
+    # each answer's build as build_many runs it (its texts escaped), or the record of no code
+    jobs = [escaped(job) if isinstance(job, BuildJob) else job
+            for job in (answers_job(instance, answers) for instance, answers in items)]
     results: list[dict | HarnessFault | None] = [None] * len(pairs)
     plans: dict[int, tuple[dict, str, GoldDraws]] = {}  # pair -> its probes' job
     for k, ((key, _), job) in enumerate(zip(pairs, jobs)):
         if probes and probed(episodes[key]) and isinstance(job, BuildJob):
             try:
-                plans[k] = (episodes[key], escaped(job).builder_code, episodes.gold_draws(key))
+                plans[k] = (episodes[key], job.builder_code, episodes.gold_draws(key))
             except HarnessFault as fault:
                 results[k] = fault
     with together(_answer_programs(jobs, plans)):  # one child per answer
@@ -169,7 +171,7 @@ def _answer_programs(jobs: list[BuildJob | BuildRecord],
     for k, job in enumerate(jobs):
         if isinstance(job, BuildJob):
             probe = probe_programs(*plans[k])[1] if k in plans else []
-            yield [program_of(escaped(job)), *probe], job.rows, job.cols
+            yield [program_of(job), *probe], job.rows, job.cols
 
 
 def reward_of(key: str, record: BuildRecord, is_probed: bool, probe_result) -> Reward:
