@@ -14,6 +14,11 @@ The verdicts are those of a compile in the child:
   as deeply nested as in a child (calibrated once: DEEPEST), whatever the caller's stack;
 - a compile that takes longer than the wall time is `timeout`, as it was when the child's clock
   covered its compile (the run then gets the whole wall time);
+- programs of one batch that differ only in their last line (an answer's probes, a gold draw's
+  candidates: the same function at other arguments) share the parse, check and compile of the
+  rest, their head, where their last lines allow (instrument.prepare): the code is then (the
+  head's, the last line's), run in turn in one namespace; each program's compile counts its
+  head's seconds;
 - the code does not depend on the parent's hash seed or -O: compile() is told optimize=0, and
   a program whose code holds a frozenset constant (a set display of three or more constants,
   `for c in {'red', 'blue', 'green'}`, `x in {1, 2}`) is compiled in its child as before: how a
@@ -27,13 +32,17 @@ import marshal
 import os
 import threading
 import time
+from collections import Counter
 from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
 from functools import partial
 from types import CodeType
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .execution import Execution, Limits
+
+if TYPE_CHECKING:
+    from .check.instrument import Head
 
 # how deeply nested a program may be before "too deeply nested to compile" depends on the stack
 # it is compiled on; in a template's child before issue 46, a sum of DEEPEST terms compiled and
@@ -76,12 +85,25 @@ def _compile_all(sources: list[str], limits: Limits, pad: int) -> list[tuple[tup
     does not always restore it when a compile fails too deep)."""
     from sartco.world import ErrorCode
 
+    from .check.instrument import split
     from .child.runtime import compile_program
 
     made: list[tuple[tuple[Any, Any, str], float]] = []
-    for source in sources:
+    parts = [split(source) if type(source) is str else None for source in sources]
+    shared = Counter(part[0] for part in parts if part is not None)
+    heads: dict[str, Head | None] = {}  # the heads of programs that share theirs (instrument.prepare)
+    made_in: dict[str, float] = {}  # the seconds of the compile that made each head
+    for source, part in zip(sources, parts):
+        head = part[0] if part is not None and shared[part[0]] > 1 else None
         start = time.perf_counter()
-        made.append((_padded(pad, partial(compile_program, source, limits)), time.perf_counter() - start))
+        result = _padded(pad, partial(compile_program, source, limits, None if head is None else heads))
+        seconds = time.perf_counter() - start
+        if head is not None:  # each program's compile counts its head's, as a compile of it whole would
+            if head in made_in:
+                seconds += made_in[head]
+            else:
+                made_in[head] = seconds
+        made.append((result, seconds))
         if made[-1][0][1] is ErrorCode.RESOURCE_LIMIT:
             break
     return made
@@ -133,7 +155,9 @@ def prepare_all(sources: list[str], limits: Limits) -> list[bytes | Execution]:
     return made
 
 
-def _frozensets(code: CodeType) -> bool:
+def _frozensets(code: CodeType | tuple[CodeType, ...]) -> bool:
     """Whether the code (or a function in it) has a frozenset constant."""
+    if isinstance(code, tuple):
+        return any(_frozensets(part) for part in code)
     return any(type(const) is frozenset or (hasattr(const, "co_consts") and _frozensets(const))
                for const in code.co_consts)

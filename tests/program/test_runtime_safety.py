@@ -21,11 +21,11 @@ def test_memory_error_while_compiling_is_the_programs_resource_limit(monkeypatch
     source = "put(board, 'nut', 'red', 0, 0)"
     calls = []
 
-    def flaky(text):
+    def flaky(text, heads=None):
         calls.append(text)
         if len(calls) == 1:
             raise MemoryError
-        return prepare(text)
+        return prepare(text, heads)
 
     monkeypatch.setattr(runtime, "prepare", flaky)
     first = runtime.compile_program(source, L)

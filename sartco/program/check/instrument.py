@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import ast
 import re
+from types import CodeType
 
 from sartco.syntax import parse
 
@@ -22,11 +23,18 @@ from ..standins.modules import MEMBERS
 from .nodes import PLAN, WRAPS
 from .walk import Walk, check_name, fail
 
-__all__ = ["instrument", "prepare"]
+__all__ = ["Head", "instrument", "judge", "prepare", "split", "walked"]
 
 
 def instrument(tree: ast.Module) -> ast.Module:
-    """Check every node and instrument in place; raise the Forbidden that comes first in the text.
+    """Check every node and instrument in place; raise the Forbidden that comes first in the text."""
+    judge(*walked(tree))
+    return tree
+
+
+def walked(tree: ast.Module) -> tuple[Walk, list[Forbidden]]:
+    """Check every node and instrument in place: what the walk saw, and the offences of single
+    nodes (judge adds those of the whole program and raises the first).
 
     One iterative pass (no recursion limit to hit); leaves (names, constants) are handled
     where they are met, because they make up two thirds of a typical tree. After an offence the
@@ -79,6 +87,13 @@ def instrument(tree: ast.Module) -> ast.Module:
                     push(child)
         except Forbidden as exc:
             offences.append(exc)
+    return walk, offences
+
+
+def judge(walk: Walk, offences: list[Forbidden]) -> None:
+    """Raise the first in the text of `offences` and of the whole program's (a builtin it reads
+    but the sandbox refuses and it never binds; an attribute it reads that nothing offers)."""
+    offences = list(offences)
     for name, node in walk.denied.items():
         if name not in walk.stored:
             try:
@@ -89,7 +104,6 @@ def instrument(tree: ast.Module) -> ast.Module:
     _undefined_attributes(walk, offences)
     if offences:
         raise min(offences, key=lambda exc: exc.position)
-    return tree
 
 
 def _undefined_attributes(walk: Walk, offences: list):
@@ -113,7 +127,72 @@ def _undefined_attributes(walk: Walk, offences: list):
             offences.append(exc)
 
 
-def prepare(source: str):
-    """Parse, check and instrument; return a code object. Raises SyntaxError or Forbidden."""
-    tree = parse(source, FILENAME)
-    return compile(instrument(tree), FILENAME, "exec", dont_inherit=True, optimize=0)  # asserts run, whatever -O
+def prepare(source: str, heads: dict[str, Head | None] | None = None) -> CodeType | tuple[CodeType, CodeType]:
+    """Parse, check and instrument; return a code object. Raises SyntaxError or Forbidden.
+
+    `heads`: the heads (Head) made so far for a batch of programs that may share theirs; a
+    program's code is then (its head's code, its last line's code) where `_inert` allows, and its
+    head is made once. Every parse and compile here is at the depth of a whole program's (the
+    same nesting limit)."""
+    parts = None if heads is None else split(source)
+    if parts is not None and heads is not None:
+        text, last = parts
+        if text not in heads:  # a head that does not compile alone or is refused: its programs are prepared whole
+            try:
+                walk, offences = walked(tree := parse(text, FILENAME))
+                heads[text] = None if offences else Head(text.count("\n") + 1, walk, _compiled(tree))
+            except (SyntaxError, ValueError):
+                heads[text] = None
+        head = heads[text]
+        if head is not None:
+            try:
+                line = parse("\n" * head.lines + last, FILENAME)  # at its own line numbers
+                if _inert(head, line):
+                    return head.code, _compiled(line)
+            except (SyntaxError, ValueError):  # (then the whole program says why)
+                pass
+    return _compiled(instrument(parse(source, FILENAME)))
+
+
+def _compiled(tree: ast.Module) -> CodeType:
+    return compile(tree, FILENAME, "exec", dont_inherit=True, optimize=0)  # asserts run, whatever -O
+
+
+class Head:
+    """A program's text but its last line, checked and compiled once for the programs of a batch
+    that differ from each other only in that line (an answer's probes, a gold draw's candidates):
+    its lines, what its walk saw and its code."""
+
+    __slots__ = ("lines", "walk", "code")
+
+    def __init__(self, lines: int, walk: Walk, code: CodeType) -> None:
+        self.lines, self.walk, self.code = lines, walk, code
+
+
+def split(source: str) -> tuple[str, str] | None:
+    """(head, last line) of a program that may share its head, else None: one line only, a
+    __future__ import (it would change how its last line compiles), or a carriage return (a
+    line break that the count of lines would miss)."""
+    cut = source.rfind("\n", 0, len(source) - 1)
+    return None if cut < 0 or "__future__" in source or "\r" in source else (source[:cut], source[cut + 1:])
+
+
+def _inert(head: Head, tree: ast.Module) -> bool:
+    """Whether the head's code and the code of the last line `tree` do what the whole program's
+    code does, and pass the check as it does (else Forbidden as prepare raises): they do when the
+    last line holds only expressions that bind, read and refuse nothing.
+
+    The same because: head and last line each parse alone and the last line starts a statement
+    at column 0, so no statement continues across them; the walk's verdict on a node depends on
+    the names the program binds and the words of its strings, to which such a last line adds only
+    its strings; and two code objects run one after the other in one namespace (runtime._run) do
+    what the module's one code does."""
+    walk, offences = walked(tree)
+    if (offences or walk.stored or walk.denied or walk.reads or walk.modules or walk.methods
+            or any(type(statement) is not ast.Expr for statement in tree.body)):
+        return False
+    whole = Walk()
+    whole.stored, whole.denied, whole.reads, whole.modules = head.walk.stored, head.walk.denied, head.walk.reads, head.walk.modules
+    whole.strings = head.walk.strings + walk.strings
+    judge(whole, [])
+    return True

@@ -105,9 +105,8 @@ BUILTINS = {
 
 # --- compile ------------------------------------------------------------------------------------
 
-def compile_program(source: str, limits) -> tuple:
-    """(code object, None, "") or (None, error code, message): the source's type and size
-    checked, then parsed, checked, instrumented and compiled (see instrument.py)."""
+def compile_program(source: str, limits, heads: dict[str, Any] | None = None) -> tuple:
+    """(code, None, "") or (None, error code, message): type and size checked, then instrument.prepare(source, heads)."""
     if type(source) is not str:
         return (None, ErrorCode.TYPE_ERROR, not_a_str(source))
     if len(source) > limits.source:
@@ -117,7 +116,7 @@ def compile_program(source: str, limits) -> tuple:
         # parsing allocates thousands of syntax-tree nodes that form no cycles (they are freed by
         # reference counting): the cyclic collector would only traverse them in vain
         gc.disable()
-        return (prepare(source), None, "")
+        return (prepare(source, heads), None, "")
     except Forbidden as exc:
         return (None, ErrorCode.FORBIDDEN, clean(str(exc)))
     except SyntaxError as exc:
@@ -263,7 +262,8 @@ def _run(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE,
     try:
         sys.setrecursionlimit(_depth() + limits.depth + 10)
         try:
-            exec(code, env, scope)
+            for part in code if type(code) is tuple else (code,):  # (a shared head's code, then its last line's)
+                exec(part, env, scope)
         finally:
             sys.setrecursionlimit(old_limit)
     except BaseException as exc:  # everything the program does ends here
