@@ -23,7 +23,8 @@ The verdicts are those of a compile in the child:
   a program whose code holds a frozenset constant (a set display of three or more constants,
   `for c in {'red', 'blue', 'green'}`, `x in {1, 2}`) is compiled in its child as before: how a
   set iterates can depend on the order its elements went in, which the compiler's steps and
-  marshal (it writes them sorted) would change, and on the hash seed.
+  marshal (it writes them sorted) would change, and on the hash seed (its nesting was judged
+  here: the child compiles it with room to spare, runtime.answer_item).
 """
 from __future__ import annotations
 

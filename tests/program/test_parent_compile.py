@@ -1,6 +1,8 @@
 """The parent compiles (issue 46, sartco/program/compiled.py): a refused program gets its verdict
 without a child, and every verdict is the one a compile in the child gave: the nesting limit
 does not move with the caller's stack (the parent's -O and hash seed: test_determinism.py)."""
+import base64
+import marshal
 import sys
 
 import pytest
@@ -43,3 +45,20 @@ def test_the_nesting_limit_is_the_childs_whatever_the_callers_depth():
         refused = _deep(frames, _sum(987))
         assert (refused.error, refused.message) == (ErrorCode.RESOURCE_LIMIT, "the program is too deeply nested to compile")
 
+
+
+@pytest.mark.skipif(sys.version_info[:2] != (3, 11), reason="the nesting figures are CPython 3.11's")
+def test_a_program_compiled_in_its_child_has_the_same_nesting_limit():
+    """A program whose code holds a frozenset constant is compiled in its child (compiled.py); the
+    child's deeper stack refuses nothing that the parent's compile let through."""
+    def with_set(terms: int) -> str:
+        return _sum(terms) + "\nfor c in {'red', 'blue', 'green'}:\n    pass"
+
+    assert marshal.loads(base64.b64decode(compiled.prepare(with_set(986), Limits())))[0] is None  # compiled in the child
+    box = pool.LocalSandbox(workers=1)
+    try:
+        deepest, refused = box.execute_many([with_set(986), with_set(987)], limits=Limits(), cache=False)
+    finally:
+        box.close()
+    assert deepest.ok and deepest.cells == {"0:0": [["nut", "red"]]}
+    assert (refused.error, refused.message) == (ErrorCode.RESOURCE_LIMIT, "the program is too deeply nested to compile")

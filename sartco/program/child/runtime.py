@@ -11,16 +11,11 @@ stand-in modules (modules.py), `__build_class__` for class statements (records.p
 the global `board` if it is a Board, else the most recently created board. Every outcome is
 turned into (ok, code, message, the board put built), the message cleaned (execution.clean).
 
-Python exceptions map to codes: NameError -> name_error, TypeError -> type_error, ValueError ->
-value_error, KeyError -> key_error, IndexError -> index_error, ZeroDivisionError ->
-zero_division, RecursionError/MemoryError/OverflowError and exhausted length/integer budgets ->
-resource_limit, a spent step budget -> timeout, WorldError -> its own code, Forbidden (an
-attribute on a type outside TYPE_METHODS, a refused builtin or format field) -> forbidden,
-anything else (AssertionError, RuntimeError, AttributeError, ...) -> runtime_error. A budget
-stop or refusal is the verdict even when the program swallowed it (budget.STOPPED, a spent step
-counter; a RecursionError or MemoryError seen by a finally body, `$final`). No internal error
-ever ends as `ok` (it is `harness_error` here, and the parent makes it the program's
-`runtime_error`: the process is the program's, verdict.py). The process runs one program (RAN).
+Python exceptions map to codes by EXCEPTION_CODES (a spent step budget: timeout; any other
+exception: runtime_error). A budget stop or refusal is the verdict even when the program swallowed
+it (budget.STOPPED, a spent step counter; a RecursionError or MemoryError seen by a finally body,
+`$final`). No internal error ever ends as `ok` (it is `harness_error` here, and the parent makes it
+the program's `runtime_error`: the process is the program's, verdict.py). RAN counts its programs.
 """
 from __future__ import annotations
 
@@ -105,17 +100,19 @@ BUILTINS = {
 
 # --- compile ------------------------------------------------------------------------------------
 
-def compile_program(source: str, limits, heads: dict[str, Any] | None = None) -> tuple:
-    """(code, None, "") or (None, error code, message): type and size checked, then instrument.prepare(source, heads)."""
+def compile_program(source: str, limits, heads: dict[str, Any] | None = None, room: int = 0) -> tuple:
+    """(code, None, "") or (None, error code, message): instrument.prepare(source, heads), `room` frames deeper (answer_item)."""
     if type(source) is not str:
         return (None, ErrorCode.TYPE_ERROR, not_a_str(source))
     if len(source) > limits.source:
         return (None, ErrorCode.RESOURCE_LIMIT, f"the program has {len(source)} characters; the limit is {limits.source}")
-    collecting = gc.isenabled()
+    collecting, deepest = gc.isenabled(), sys.getrecursionlimit()
     try:
         # parsing allocates thousands of syntax-tree nodes that form no cycles (they are freed by
         # reference counting): the cyclic collector would only traverse them in vain
         gc.disable()
+        if room:
+            sys.setrecursionlimit(deepest + room)
         return (prepare(source, heads), None, "")
     except Forbidden as exc:
         return (None, ErrorCode.FORBIDDEN, clean(str(exc)))
@@ -130,6 +127,8 @@ def compile_program(source: str, limits, heads: dict[str, Any] | None = None) ->
     except Exception as exc:  # a compiler failure must not end the process without an answer
         return (None, ErrorCode.HARNESS_ERROR, clean(f"internal error while compiling: {type(exc).__name__}: {exc}"))
     finally:
+        if room:
+            sys.setrecursionlimit(deepest)
         if collecting:
             gc.enable()
 
@@ -216,9 +215,10 @@ def answer(compiled: tuple[Any, Any, str], rows: int, cols: int, limits: Limits,
 
 
 def answer_item(item: bytes, rows: int, cols: int, limits: Limits, semantics: str = MODULE) -> bytes:
-    """answer() of an item of compiled.prepare's: base64 of marshalled (code, source); code None: compile here."""
+    """answer() of an item of compiled.prepare's: base64 of marshalled (code, source); code None: compile here
+    (the parent compiled it and judged its nesting: this stack, deeper than the parent's, must refuse nothing)."""
     code, source = marshal.loads(binascii.a2b_base64(item))
-    return answer((code, None, "") if code else compile_program(source, limits), rows, cols, limits, semantics, source)
+    return answer((code, None, "") if code else compile_program(source, limits, room=50), rows, cols, limits, semantics, source)
 
 
 def encode(ok, error, message, board) -> bytes:
