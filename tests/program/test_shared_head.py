@@ -84,7 +84,8 @@ def test_a_last_line_that_binds_or_reads_is_prepared_whole():
     heads: dict = {}
     assert type(instrument.prepare(f"{FUNCTION}\nf(board, ['red'], 1, 1)", heads)) is tuple
     for line in ("x = 1", "import math", "board.cells", "eval", "    f(board, ['red'], 1, 1)", "else: pass",
-                 "class C: pass", "global x", "f(board, ['red'], 1, 1) if x else None; y = 2"):
+                 "class C: pass", "global x", "f(board, ['red'], 1, 1) if x else None; y = 2",
+                 "'a docstring binds __doc__'; f(board, ['red'], 1, 1)"):
         try:
             code = instrument.prepare(f"{FUNCTION}\n{line}", heads)
         except (SyntaxError, Forbidden):

@@ -186,10 +186,11 @@ def _inert(head: Head, tree: ast.Module) -> bool:
     at column 0, so no statement continues across them; the walk's verdict on a node depends on
     the names the program binds and the words of its strings, to which such a last line adds only
     its strings; and two code objects run one after the other in one namespace (runtime._run) do
-    what the module's one code does."""
+    what the module's one code does, unless the second starts with a string (its docstring: it
+    would bind __doc__)."""
     walk, offences = walked(tree)
     if (offences or walk.stored or walk.denied or walk.reads or walk.modules or walk.methods
-            or any(type(statement) is not ast.Expr for statement in tree.body)):
+            or any(type(statement) is not ast.Expr for statement in tree.body) or ast.get_docstring(tree) is not None):
         return False
     whole = Walk()
     whole.stored, whole.denied, whole.reads, whole.modules = head.walk.stored, head.walk.denied, head.walk.reads, head.walk.modules
