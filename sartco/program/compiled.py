@@ -99,11 +99,10 @@ def _compile_all(sources: list[str], limits: Limits, pad: int) -> list[tuple[tup
         start = time.perf_counter()
         result = _padded(pad, partial(compile_program, source, limits, None if head is None else heads))
         seconds = time.perf_counter() - start
-        if head is not None:  # each program's compile counts its head's, as a compile of it whole would
-            if head in made_in:
-                seconds += made_in[head]
-            else:
-                made_in[head] = seconds
+        if head is not None and head in heads and head not in made_in:
+            made_in[head] = seconds  # (the compile that made the head)
+        elif head is not None and type(result[0]) is tuple:  # a program whose code is a head's and its
+            seconds += made_in[head]  # last line's counts the head's making, as a compile of it whole would
         made.append((result, seconds))
         if made[-1][0][1] is ErrorCode.RESOURCE_LIMIT:
             break

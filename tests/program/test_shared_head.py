@@ -110,3 +110,12 @@ def test_a_shared_head_keeps_the_nesting_limit():
     made = compiled.prepare_all([summed(terms, last) for terms in (986, 987, 986) for last in lasts], Limits())
     assert [type(m) is bytes for m in made] == [True, True, False, False, True, True]
     assert {(m.error, m.message) for m in made[2:4]} == {(ErrorCode.RESOURCE_LIMIT, "the program is too deeply nested to compile")}
+
+
+def test_a_program_that_shares_its_head_counts_the_heads_compile_time():
+    """A compile longer than the wall time is `timeout` (compiled.py); a program whose head was
+    made for another program of the batch counts that head's compile, as its whole compile would."""
+    head = "\n".join(f"x{i} = [{i}, {i} + 1, 'a{i}']" for i in range(6000))
+    limits = Limits(wall_time=0.005, source=1_000_000)  # the head takes far longer to compile
+    made = compiled.prepare_all([f"{head}\nput(board, 'nut', 'red', {k}, 0)" for k in range(3)], limits)
+    assert [(m.error, m.message) for m in made] == [(ErrorCode.TIMEOUT, "the program ran longer than 0.005 s")] * 3
