@@ -134,8 +134,7 @@ def prepare(source: str, heads: dict[str, Head | None] | None = None) -> CodeTyp
     program's code is then (its head's code, its last line's code) where `_inert` allows, and its
     head is made once. Every parse and compile here is at the depth of a whole program's (the
     same nesting limit)."""
-    parts = None if heads is None else split(source)
-    if parts is not None and heads is not None:
+    if heads is not None and (parts := split(source)) is not None:
         text, last = parts
         if text not in heads:  # a head that does not compile alone or is refused: its programs are prepared whole
             try:
@@ -190,7 +189,8 @@ def _inert(head: Head, tree: ast.Module) -> bool:
     would bind __doc__)."""
     walk, offences = walked(tree)
     if (offences or walk.stored or walk.denied or walk.reads or walk.modules or walk.methods
-            or any(type(statement) is not ast.Expr for statement in tree.body) or ast.get_docstring(tree) is not None):
+            or any(type(statement) is not ast.Expr for statement in tree.body)
+            or ast.get_docstring(tree) is not None):
         return False
     whole = Walk()
     whole.stored, whole.denied, whole.reads, whole.modules = head.walk.stored, head.walk.denied, head.walk.reads, head.walk.modules
