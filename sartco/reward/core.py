@@ -26,6 +26,7 @@ from sartco.clem.core.outcomes import outcome_for
 from sartco.clem.core.probes import GoldDraws, gold_draws, probe_programs, probed, run_probes_many
 from sartco.clem.core.sandbox import together
 from sartco.clem.core.scoring import build_scores, probe_scores
+from sartco.collector import paused
 from sartco.errors import UserError
 from sartco.episode import CATEGORY_SEPARATOR, FUNCTION_GENERALISATION, PROBE_CATEGORIES
 from sartco.protocols import file_episodes
@@ -127,12 +128,15 @@ def answers_of(key: str, completion, turns: int) -> list[str]:
     return [escape(a) for a in answers] + [""] * (turns - len(answers))
 
 
+@paused()
 def score(pairs: Iterable[tuple[str, str | Sequence[str]]], episodes: Episodes, *, probes: bool = True) -> list[Reward]:
     """The rewards of (episode id, completion) pairs, in input order. A completion is the answer
     text (single-turn episodes) or a list of answers, one per turn. Every pair is checked before
     anything runs (ValueError naming the pair: an unknown id, a completion of another type, more
     answers than turns). `probes`: probe the function of optimal_function and repetition answers
-    (Function Generalisation), as the game does; off, those cells cost one program per answer."""
+    (Function Generalisation), as the game does; off, those cells cost one program per answer.
+    Python's cyclic collector is paused meanwhile (sartco.collector: no walk of the caller's
+    whole heap in the middle of a batch)."""
     pairs = list(pairs)
     items = []
     for k, pair in enumerate(pairs):

@@ -14,7 +14,8 @@ ROOT = Path(__file__).resolve().parents[2]
 # lowest first; a module may import modules of its own rank's package and of lower ranks
 LAYERS = [
     ("settings", ["sartco.settings"]),
-    ("base", ["sartco.errors", "sartco.dataset", "sartco.episode", "sartco.text", "sartco.syntax", "sartco.clock"]),
+    ("base", ["sartco.errors", "sartco.dataset", "sartco.episode", "sartco.text", "sartco.syntax", "sartco.clock",
+              "sartco.collector"]),
     ("world", ["sartco.world"]),
     # sartco.program by side of the wall (docs/sandbox.md, "The sandbox's rooms"): the stand-ins a
     # program calls, the check that reads a program before it runs, the child that runs it, then the
