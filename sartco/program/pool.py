@@ -2,7 +2,10 @@
 program (child/template.py), batches split over them; and the module-level execute() / execute_many()
 of the sandbox in use (sandbox.py).
 
-`LocalSandbox.dispatch` sends programs in chunks (a header line + one line per program) to up to
+`execute_many` compiles a big call in parts (`parts`: FIRST programs, then twice as many each
+time) and hands each part to `dispatch` on a thread of its own as soon as it is compiled, so the
+templates run one part while the parent compiles the next (a call of one part: in the caller's
+thread, as before). `LocalSandbox.dispatch` sends programs in chunks (a header line + one line per program) to up to
 `workers` templates (default: min(2, CPUs)), each driven by one thread that reads the answers while
 a second one writes the chunks (so a template finds its next chunk waiting). The shares are
 balanced by size, since a program's cost grows with its text (parsing and compiling are much of
@@ -26,6 +29,8 @@ import marshal
 import os
 import threading
 from collections import OrderedDict
+from concurrent.futures import Future, ThreadPoolExecutor
+from functools import partial
 
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, Board, ErrorCode, WorldError
 
@@ -37,6 +42,7 @@ from .verdict import failed
 BATCH = 32  # a call with fewer items than this uses one template
 GOLD = "gold"  # execute_many's mode for the harness's own reference programs (child/template.py)
 ANSWER = "answer"  # execute_many's mode for the programs of model answers, each answer's in one child (groups)
+FIRST = 64  # programs of a big call compiled before the templates start on them (parts)
 MEMO = 50_000  # verdicts a LocalSandbox keeps for repeated programs (a few KB each)
 TRANSIENT = frozenset({ErrorCode.TIMEOUT, ErrorCode.RESOURCE_LIMIT, ErrorCode.HARNESS_ERROR})
 MemoKey = tuple[str, int, int, Limits, str, str]  # source, rows, cols, limits, semantics, mode
@@ -179,14 +185,23 @@ class LocalSandbox:
                 else:
                     first.setdefault(p, i)
                     todo.append(i)
-            # compiled here (compiled.py); a program that never runs has its Execution already
-            made = dict(zip(todo, [json.dumps(programs[i]).encode() for i in todo] if mode == "breach" else
-                            compiled.prepare_all([programs[i] for i in todo], limits)))
-            run = [i for i in todo if type(made[i]) is bytes]
-            items = [made[i] for i in run]
-            groups = None if mode != ANSWER or answers is None else [answers[i] for i in run]
-            ran = dispatch(self, items, rows, cols, limits, workers, semantics, mode, groups) if items else []
-            made.update(zip(run, ran))
+            # compiled here (compiled.py), a part at a time: the templates run a part while the next
+            # one compiles; a program that never runs has its Execution already
+            labels = answers if mode == ANSWER else None
+            cuts = parts(todo, labels)
+            made: dict[int, bytes | Execution] = {}
+            running = []
+            with ThreadPoolExecutor(1, thread_name_prefix="sartco-feeder") as feeder:  # (no thread for one part)
+                for part in cuts:
+                    made.update(zip(part, [json.dumps(programs[i]).encode() for i in part] if mode == "breach" else
+                                    compiled.prepare_all([programs[i] for i in part], limits)))
+                    run = [i for i in part if type(made[i]) is bytes]
+                    if run:
+                        job = partial(dispatch, self, [made[i] for i in run], rows, cols, limits, workers, semantics,
+                                      mode, None if labels is None else [labels[i] for i in run])
+                        running.append((run, feeder.submit(job) if len(cuts) > 1 else _done(job())))
+                for run, ran in running:
+                    made.update(zip(run, ran.result()))
             for i in todo:
                 results[i] = answer = made[i]
                 if cache and type(answer) is Execution:
@@ -203,6 +218,29 @@ class LocalSandbox:
                 semantics: str = MODULE) -> Execution:
         """Run one program on a fresh rows x cols board (docs/sandbox.md: the contract)."""
         return self.execute_many([code], rows, cols, limits, workers=1, semantics=semantics)[0]
+
+
+def parts(todo: list[int], labels: list[object] | None = None) -> list[list[int]]:
+    """The programs of a call (`todo`, their indices), in the order given, in parts of FIRST,
+    2 x FIRST, 4 x FIRST, ... programs: the templates start on the first part while the parent
+    compiles the next, and the parts soon outgrow their compiles (a compile is a fraction of a
+    run). A part never ends inside one answer's programs (`labels`, mode ANSWER: one child each)."""
+    cuts: list[list[int]] = []
+    start, size = 0, FIRST
+    while start < len(todo):
+        end = min(start + size, len(todo))
+        while labels is not None and end < len(todo) and labels[todo[end]] == labels[todo[end - 1]]:
+            end += 1
+        cuts.append(todo[start:end])
+        start, size = end, 2 * size
+    return cuts
+
+
+def _done(result: list[Execution]) -> Future[list[Execution]]:
+    """A Future that holds `result` already (a call of one part runs it in the caller's thread)."""
+    done: Future[list[Execution]] = Future()
+    done.set_result(result)
+    return done
 
 
 def dispatch(sandbox: LocalSandbox, items, rows, cols, limits, workers=None, semantics=MODULE, mode="code",
