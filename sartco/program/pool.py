@@ -3,9 +3,9 @@ program (child/template.py), batches split over them; and the module-level execu
 of the sandbox in use (sandbox.py).
 
 `execute_many` compiles a big call in parts (`parts`: FIRST programs, then twice as many each
-time) and hands each part to `dispatch` on a thread of its own as soon as it is compiled, so the
-templates run one part while the parent compiles the next (a call of one part: in the caller's
-thread, as before). `LocalSandbox.dispatch` sends programs in chunks (a header line + one line per program) to up to
+time) and hands each part to `dispatch` on a daemon thread of its own as soon as it is compiled,
+after the part before it (`_Fed`), so the templates run one part while the parent compiles the
+next (a call of one part: in the caller's thread, as before). `LocalSandbox.dispatch` sends programs in chunks (a header line + one line per program) to up to
 `workers` templates (default: min(2, CPUs)), each driven by one thread that reads the answers while
 a second one writes the chunks (so a template finds its next chunk waiting). The shares are
 balanced by size, since a program's cost grows with its text (parsing and compiling are much of
@@ -29,7 +29,7 @@ import marshal
 import os
 import threading
 from collections import OrderedDict
-from concurrent.futures import Future, ThreadPoolExecutor
+from collections.abc import Callable
 from functools import partial
 
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, Board, ErrorCode, WorldError
@@ -190,18 +190,17 @@ class LocalSandbox:
             labels = answers if mode == ANSWER else None
             cuts = parts(todo, labels)
             made: dict[int, bytes | Execution] = {}
-            running = []
-            with ThreadPoolExecutor(1, thread_name_prefix="sartco-feeder") as feeder:  # (no thread for one part)
-                for part in cuts:
-                    made.update(zip(part, [json.dumps(programs[i]).encode() for i in part] if mode == "breach" else
-                                    compiled.prepare_all([programs[i] for i in part], limits)))
-                    run = [i for i in part if type(made[i]) is bytes]
-                    if run:
-                        job = partial(dispatch, self, [made[i] for i in run], rows, cols, limits, workers, semantics,
-                                      mode, None if labels is None else [labels[i] for i in run])
-                        running.append((run, feeder.submit(job) if len(cuts) > 1 else _done(job())))
-                for run, ran in running:
-                    made.update(zip(run, ran.result()))
+            running: list[tuple[list[int], _Fed]] = []
+            for part in cuts:
+                made.update(zip(part, [json.dumps(programs[i]).encode() for i in part] if mode == "breach" else
+                                compiled.prepare_all([programs[i] for i in part], limits)))
+                run = [i for i in part if type(made[i]) is bytes]
+                if run:
+                    job = partial(dispatch, self, [made[i] for i in run], rows, cols, limits, workers, semantics,
+                                  mode, None if labels is None else [labels[i] for i in run])
+                    running.append((run, _Fed(job, running[-1][1] if running else None, len(cuts) > 1)))
+            for run, fed in running:
+                made.update(zip(run, fed.result()))
             for i in todo:
                 results[i] = answer = made[i]
                 if cache and type(answer) is Execution:
@@ -236,11 +235,37 @@ def parts(todo: list[int], labels: list[object] | None = None) -> list[list[int]
     return cuts
 
 
-def _done(result: list[Execution]) -> Future[list[Execution]]:
-    """A Future that holds `result` already (a call of one part runs it in the caller's thread)."""
-    done: Future[list[Execution]] = Future()
-    done.set_result(result)
-    return done
+class _Fed:
+    """The dispatch of one part (`job`), after the part before it. With `apart`, on a daemon thread
+    of its own, as dispatch's threads are: a caller interrupted meanwhile (Ctrl-C) and a process
+    that ends do not wait for it. Else (a call of one part) in the caller's thread, now."""
+
+    def __init__(self, job: Callable[[], list[Execution]], before: _Fed | None, apart: bool):
+        self._job, self._before = job, before
+        self._out: list[Execution] | BaseException = []
+        self._thread = threading.Thread(target=self._run, daemon=True, name="sartco-feeder") if apart else None
+        if self._thread is None:
+            self._run()
+        else:
+            self._thread.start()
+
+    def _run(self) -> None:
+        if self._before is not None:
+            self._before.wait()
+        try:
+            self._out = self._job()
+        except BaseException as exc:  # raised by result(), in the caller's thread
+            self._out = exc
+
+    def wait(self) -> None:
+        if self._thread is not None:
+            self._thread.join()
+
+    def result(self) -> list[Execution]:
+        self.wait()
+        if isinstance(self._out, BaseException):
+            raise self._out
+        return self._out
 
 
 def dispatch(sandbox: LocalSandbox, items, rows, cols, limits, workers=None, semantics=MODULE, mode="code",

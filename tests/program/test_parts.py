@@ -1,9 +1,12 @@
 """A big call in parts (pool.parts, issue 46): the templates run one part while the parent compiles
 the next. The verdicts, their order, the memo and the answers' children are those of one part.
 """
+import threading
+
 import pytest
 
 from sartco.program import pool
+from sartco.program.verdict import failed
 from sartco.world import ErrorCode
 
 from test_gold_mode import DETERMINED, _benign
@@ -105,3 +108,36 @@ def test_a_part_whose_templates_fail_makes_every_verdict_a_harness_error(spied, 
     assert len(calls) == 1 and raised[0] == 16  # the first part ran, the second (and the third) failed
     assert {(ex.error, ex.message) for ex in results} == {
         (E.HARNESS_ERROR, "sandbox failure: OSError: the templates are gone")}
+
+
+def test_an_interrupted_call_does_not_wait_for_the_parts_it_sent(spied, monkeypatch):
+    """Ctrl-C while the parent compiles a later part: the call ends at once, and the part already
+    sent goes on in a daemon thread (a process that ends does not wait for it)."""
+    running, finished, release = threading.Event(), threading.Event(), threading.Event()
+    compiles = []
+    prepare_all = pool.compiled.prepare_all
+
+    def blocked(sandbox, items, *args):
+        running.set()
+        release.wait(5)
+        finished.set()
+        return [failed(E.HARNESS_ERROR, "not run") for _ in items]
+
+    def interrupted(sources, limits):
+        compiles.append(len(sources))
+        if len(compiles) == 2:
+            running.wait(5)
+            raise KeyboardInterrupt
+        return prepare_all(sources, limits)
+
+    monkeypatch.setattr(pool, "dispatch", blocked)
+    monkeypatch.setattr(pool.compiled, "prepare_all", interrupted)
+    box = pool.LocalSandbox(workers=1)
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            box.execute_many([_benign(k) + f"\nz = {k}" for k in range(30)], cache=False)
+        assert running.is_set() and not finished.is_set()
+        assert [t.daemon for t in threading.enumerate() if t.name == "sartco-feeder"] == [True]
+    finally:
+        release.set()
+        box.close()
