@@ -5,7 +5,9 @@ of the sandbox in use (sandbox.py).
 `execute_many` compiles a big call in parts (`parts`: FIRST programs, then twice as many each
 time) and hands each part to `dispatch` on a daemon thread of its own as soon as it is compiled,
 after the part before it (`_Fed`), so the templates run one part while the parent compiles the
-next (a call of one part: in the caller's thread, as before). `LocalSandbox.dispatch` sends programs in chunks (a header line + one line per program) to up to
+next (a call of one part: in the caller's thread, as before).
+
+`LocalSandbox.dispatch` sends programs in chunks (a header line + one line per program) to up to
 `workers` templates (default: min(2, CPUs)), each driven by one thread that reads the answers while
 a second one writes the chunks (so a template finds its next chunk waiting). The shares are
 balanced by size, since a program's cost grows with its text (parsing and compiling are much of
