@@ -200,7 +200,10 @@ class LocalSandbox:
                 if run:
                     job = partial(dispatch, self, [made[i] for i in run], rows, cols, limits, workers, semantics,
                                   mode, None if labels is None else [labels[i] for i in run])
-                    running.append((run, _Fed(job, running[-1][1] if running else None, len(cuts) > 1)))
+                    if len(cuts) == 1:  # in the caller's thread, as a call was before the parts
+                        made.update(zip(run, job()))
+                    else:
+                        running.append((run, _Fed(job, running[-1][1] if running else None)))
             for run, fed in running:
                 made.update(zip(run, fed.result()))
             for i in todo:
@@ -238,33 +241,26 @@ def parts(todo: list[int], labels: list[object] | None = None) -> list[list[int]
 
 
 class _Fed:
-    """The dispatch of one part (`job`), after the part before it. With `apart`, on a daemon thread
-    of its own, as dispatch's threads are: a caller interrupted meanwhile (Ctrl-C) and a process
-    that ends do not wait for it. Else (a call of one part) in the caller's thread, now."""
+    """The dispatch of one part (`job`) on a daemon thread of its own, after the part before it:
+    as dispatch's own threads are daemons, a caller interrupted meanwhile (Ctrl-C) and a process
+    that ends do not wait for it."""
 
-    def __init__(self, job: Callable[[], list[Execution]], before: _Fed | None, apart: bool):
+    def __init__(self, job: Callable[[], list[Execution]], before: _Fed | None):
         self._job, self._before = job, before
         self._out: list[Execution] | BaseException = []
-        self._thread = threading.Thread(target=self._run, daemon=True, name="sartco-feeder") if apart else None
-        if self._thread is None:
-            self._run()
-        else:
-            self._thread.start()
+        self._thread = threading.Thread(target=self._run, daemon=True, name="sartco-feeder")
+        self._thread.start()
 
     def _run(self) -> None:
         if self._before is not None:
-            self._before.wait()
+            self._before._thread.join()
         try:
             self._out = self._job()
         except BaseException as exc:  # raised by result(), in the caller's thread
             self._out = exc
 
-    def wait(self) -> None:
-        if self._thread is not None:
-            self._thread.join()
-
     def result(self) -> list[Execution]:
-        self.wait()
+        self._thread.join()
         if isinstance(self._out, BaseException):
             raise self._out
         return self._out
