@@ -1,4 +1,6 @@
-"""Where a program's CPU goes (issue 46): `sartco bench-execute --breakdown` prints it beside the floor.
+"""Where a program's CPU goes (issue 46): `sartco bench-execute --breakdown` prints it beside the floor,
+and `sartco bench-reward` splits a reward's CPU by process (roles: the templates, their zygotes,
+the programs' processes).
 
 Each stage runs the corpus's programs in a fresh process pinned to one core, and counts the CPU
 and the page faults of that process and of the children it reaped (os.times, getrusage), per
@@ -31,6 +33,7 @@ import statistics
 import subprocess
 import sys
 import time
+from collections.abc import Iterator
 from pathlib import Path
 
 from sartco.settings import IMPORT_ROOT
@@ -80,21 +83,40 @@ def floor(n: int, core: int = 0) -> tuple[float, float, int]:
     return float(wall), float(cpu), int(faults)
 
 
+def _walk(pids: list[int]) -> Iterator[tuple[int, list[str]]]:
+    """(depth, /proc stat fields after the command) of each live process of `pids` (depth 0) and
+    of their live descendants."""
+    todo = [(0, pid) for pid in pids]
+    while todo:
+        depth, pid = todo.pop()
+        try:
+            fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+            yield depth, fields
+            todo += [(depth + 1, int(kid)) for kid in Path(f"/proc/{pid}/task/{pid}/children").read_text().split()]
+        except (OSError, IndexError, ValueError):
+            pass
+
+
 def usage(pids: list[int]) -> tuple[float, int]:
     """CPU seconds and page faults so far of the live processes `pids` and their live descendants
     (a template and its zygote), each with the children it reaped (from /proc: utime, stime,
     cutime, cstime; minflt, cminflt, majflt, cmajflt)."""
-    cpu, faults, todo = 0.0, 0, list(pids)
-    while todo:
-        pid = todo.pop()
-        try:
-            fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
-            cpu += sum(map(int, fields[11:15])) / os.sysconf("SC_CLK_TCK")
-            faults += sum(map(int, fields[7:11]))
-            todo += map(int, Path(f"/proc/{pid}/task/{pid}/children").read_text().split())
-        except (OSError, IndexError, ValueError):
-            pass
+    cpu, faults = 0.0, 0
+    for _, fields in _walk(pids):
+        cpu += sum(map(int, fields[11:15])) / os.sysconf("SC_CLK_TCK")
+        faults += sum(map(int, fields[7:11]))
     return cpu, faults
+
+
+def roles(pids: list[int]) -> tuple[float, float, float]:
+    """usage()'s CPU seconds of templates `pids` in three: the templates' own, their zygotes' own,
+    and the programs' processes (every process below a zygote, live or reaped)."""
+    parts = [0.0, 0.0, 0.0]
+    for depth, fields in _walk(pids):
+        own, reaped = int(fields[11]) + int(fields[12]), int(fields[13]) + int(fields[14])
+        parts[min(depth, 2)] += own / os.sysconf("SC_CLK_TCK")
+        parts[min(depth + 1, 2)] += reaped / os.sysconf("SC_CLK_TCK")
+    return parts[0], parts[1], parts[2]
 
 
 def templates_cpu() -> float:
@@ -102,6 +124,11 @@ def templates_cpu() -> float:
     they reaped: what getrusage's RUSAGE_CHILDREN never sees (a killed template's tree is not
     reaped by this process)."""
     return usage(local().pids())[0]
+
+
+def templates_roles() -> tuple[float, float, float]:
+    """templates_cpu() in three (roles): the templates', their zygotes' and the programs' processes'."""
+    return roles(local().pids())
 
 
 def stage_job(sources: list[str]) -> tuple[list[str], bytes]:

@@ -13,6 +13,11 @@ and without them (ES, cell F1, category and puts only); the sandbox's workers ar
 before each run (no verdict cached from the run before) and started before the clock; the best
 of --repeat runs is printed. The gold probe draws of every probed episode are computed once
 before (they depend on the episode alone and are kept by `Episodes`) and timed apart.
+
+The CPU of each run is this process's and its sandbox's (sartco.program.costs); the last line
+gives the single-turn answers' CPU per reward in its parts: this process (reading the answers,
+compiling the programs, deciding the boards, scoring), the templates' own work, their zygotes'
+(a fork per answer) and the programs' processes.
 """
 from __future__ import annotations
 
@@ -25,12 +30,13 @@ from sartco.clem.core.probes import probed
 from sartco.clem.core.sandbox import restart, run_many
 from sartco.clem.players.answers import instruct_answers
 from sartco.errors import UserError
-from sartco.program.costs import templates_cpu
+from sartco.program.costs import templates_roles
 from sartco.protocols import INSTANCE_FILES, INSTANCES_DIR
 
 from .core import Episodes, score
 
 PLAYERS = {"gold": "mock", "erring": "erring"}  # label -> the built-in player whose answers are scored
+ROLES = ("this process", "templates", "zygotes", "programs' processes")  # _cpu's parts
 TARGETS = (500, 2000)  # rewards/s wanted for single-turn answers on two cores, with probes and without (issue 46)
 
 
@@ -69,21 +75,25 @@ def answer_sets(episodes: Episodes) -> dict[tuple[str, str], list[tuple[str, obj
     return sets
 
 
-def best_rate(pairs: list, episodes: Episodes, *, batch: int, repeat: int, probes: bool) -> tuple[float, float]:
-    """(rewards per wall second, CPU ms per reward: this process, its templates, their zygotes and
-    every program's process) of the fastest of `repeat` runs, each on freshly started workers
-    (their start and end are not counted)."""
-    best = (float("inf"), 0.0)
+def best_rate(pairs: list, episodes: Episodes, *, batch: int, repeat: int, probes: bool) -> tuple[float, list[float]]:
+    """(rewards per wall second, CPU ms per reward of this process, its templates, their zygotes
+    and the programs' processes (costs.roles)) of the fastest of `repeat` runs, each on freshly
+    started workers (their start and end are not counted)."""
+    best = (float("inf"), [0.0] * 4)
     for _ in range(repeat):
         started()
-        cpu = cpu_seconds() + templates_cpu()
+        cpu = _cpu()
         start = time.perf_counter()
         for i in range(0, len(pairs), batch):
             score(pairs[i:i + batch], episodes, probes=probes)
         elapsed = time.perf_counter() - start
-        best = min(best, (elapsed, cpu_seconds() + templates_cpu() - cpu))
+        best = min(best, (elapsed, [1000 * (b - a) / len(pairs) for a, b in zip(cpu, _cpu())]))
     restart()
-    return len(pairs) / best[0], 1000 * best[1] / len(pairs)
+    return len(pairs) / best[0], best[1]
+
+
+def _cpu() -> list[float]:
+    return [cpu_seconds(), *templates_roles()]
 
 
 def started() -> None:
@@ -118,17 +128,20 @@ def run(args) -> int:
     for (label, kind), pairs in sorted(answer_sets(episodes).items(), key=lambda item: (item[0][1] != "single-turn", item[0])):
         runs = [best_rate(pairs, episodes, batch=args.batch, repeat=args.repeat, probes=p)
                 for p in (True, False)]
-        shown = ",  ".join(f"{rate:>7,.0f} ({cpu:.2f})" for rate, cpu in runs)
+        shown = ",  ".join(f"{rate:>7,.0f} ({sum(cpu):.2f})" for rate, cpu in runs)
         print(f"{label + ', ' + kind:<22} {len(pairs):>6}   {shown}")
         if kind == "single-turn":
             single.append((len(pairs), runs))
     if single:
         n = sum(count for count, _ in single)
         rates = [n / sum(count / runs[i][0] for count, runs in single) for i in (0, 1)]  # pairs over total time
+        parts = [[sum(count * runs[i][1][k] for count, runs in single) / n for k in range(4)] for i in (0, 1)]
         cpus = os.cpu_count() or 1
-        most = [n * cpus * 1e3 / sum(count * runs[i][1] for count, runs in single) for i in (0, 1)]
+        most = [cpus * 1e3 / sum(parts[i]) for i in (0, 1)]
         print(f"single-turn answers, all: {rates[0]:,.0f} rewards/s with probes, {rates[1]:,.0f} without "
               f"(targets {TARGETS[0]:,} and {TARGETS[1]:,} on two cores; load average {os.getloadavg()[0]:.1f} now)")
         print(f"  at the CPU these rewards took, {cpus} CPUs fully used would give at most {most[0]:,.0f} with "
               f"probes, {most[1]:,.0f} without")
+        print("  that CPU, ms per reward with probes / without: " + ", ".join(
+            f"{name} {parts[0][k]:.2f} / {parts[1][k]:.2f}" for k, name in enumerate(ROLES)))
     return 0

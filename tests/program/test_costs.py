@@ -1,5 +1,6 @@
 """costs.templates_cpu: the CPU of every program's process is counted where benchmarks read it
-(`sartco bench-execute`, `sartco bench-reward`). getrusage(RUSAGE_CHILDREN) never sees it: a
+(`sartco bench-execute`, `sartco bench-reward`), and costs.templates_roles puts it where it was
+spent (`sartco bench-reward`'s last line). getrusage(RUSAGE_CHILDREN) never sees it: a
 program's process is reaped by its zygote, and a template's tree is killed, not reaped, by this
 process. And the breakdown's stages "program" and "least" run the programs they are timed on."""
 import base64
@@ -10,7 +11,7 @@ import time
 from sartco.clock import cpu_seconds
 from sartco.program import execute_many, shutdown
 from sartco.program import costs
-from sartco.program.costs import templates_cpu
+from sartco.program.costs import templates_cpu, templates_roles
 
 WORK = "sum(range(400000))"
 
@@ -22,11 +23,15 @@ def test_templates_cpu_counts_the_programs_processes():
         for _ in range(100):
             eval(WORK)
         own = time.process_time() - own   # the same work in this process
-        templates, here = templates_cpu(), cpu_seconds()
+        templates, roles, here = templates_cpu(), templates_roles(), cpu_seconds()
         results = execute_many([f"x = {WORK} + {i}" for i in range(100)], workers=2, cache=False)
         assert all(r.ok for r in results)
         assert templates_cpu() - templates >= 0.5 * own   # at least half: the programs' own loops
         assert cpu_seconds() - here < 0.5 * own   # and not in this process or its reaped children
+        # in its parts: the loops ran in the programs' processes, not in a template or its zygote
+        template, zygote, programs = (b - a for a, b in zip(roles, templates_roles()))
+        assert programs >= 0.5 * own and template + zygote < 0.5 * own, (template, zygote, programs, own)
+        assert abs(sum(templates_roles()) - templates_cpu()) < 0.015   # the parts of one whole
     finally:
         shutdown()
 

@@ -94,6 +94,17 @@ def test_bench_reward_prints_rewards_per_second(capsys):
     assert out[1].startswith("gold probe draws (once per episode, kept): 6 episodes in ")
     kinds = [line.split()[0] + " " + line.split()[1] for line in out[3:7]]
     assert kinds == ["erring, single-turn", "gold, single-turn", "erring, multi-turn", "gold, multi-turn"]
-    assert out[-2].startswith("single-turn answers, all: ") and "rewards/s with probes" in out[-2]
+    assert out[-3].startswith("single-turn answers, all: ") and "rewards/s with probes" in out[-3]
     assert re.fullmatch(r"  at the CPU these rewards took, \d+ CPUs fully used would give at most [\d,]+ with "
-                        r"probes, [\d,]+ without", out[-1]), out[-1]
+                        r"probes, [\d,]+ without", out[-2]), out[-2]
+    # the CPU in its parts, with probes / without: they add up to the single-turn rows' CPU column
+    parts = re.fullmatch(r"  that CPU, ms per reward with probes / without: this process (.+), templates (.+), "
+                         r"zygotes (.+), programs' processes (.+)", out[-1])
+    assert parts, out[-1]
+    rows = [re.fullmatch(r"\S+, single-turn +(\d+) +[\d,]+ \(([\d.]+)\), +[\d,]+ \(([\d.]+)\)", line)
+            for line in out[3:5]]
+    assert all(rows), out[3:5]
+    for k in (0, 1):
+        split = [float(part.split(" / ")[k]) for part in parts.groups()]
+        whole = sum(int(r[1]) * float(r[2 + k]) for r in rows) / sum(int(r[1]) for r in rows)
+        assert abs(sum(split) - whole) < 0.03, (split, whole)
