@@ -190,12 +190,12 @@ def namespace(board, init_board, name: str = "__main__") -> dict:
     SERIALS.clear()
     conversions.ADDRESSES.clear()
     return {"__builtins__": BUILTINS, "__name__": name, "board": board, "put": put, "init_board": init_board,
-            "np": NUMPY[0] if RAN[0] == 1 else load("numpy")}
+            "np": NUMPY[RAN[0] - 1] if RAN[0] <= len(NUMPY) else load("numpy")}
 
 
-# programs this process ran (_run counts): a child's first uses the template's np and typing's caches
-# as the template emptied them (afresh costs page faults); in a shared child (batch.py) the rest make their own
-RAN, NUMPY = [0], [load("numpy")]
+# programs this process ran (_run counts): a child's first 32 bind np stand-ins the template made, one each
+# (making one copies numpy's members: page faults in a child), and find typing's caches as the template left them
+RAN, NUMPY = [0], [load("numpy") for _ in range(32)]
 
 
 def run(compiled: tuple, rows: int, cols: int, limits, semantics: str = MODULE, source: str = "") -> list:

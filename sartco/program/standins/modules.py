@@ -172,11 +172,18 @@ shallow_copy.__name__ = shallow_copy.__qualname__ = "copy"
 deep_copy.__name__ = deep_copy.__qualname__ = "deepcopy"
 
 
+_TYPING_USED = [True]  # whether typing's caches may hold something: a program imported typing since they were emptied
+
+
 def forget_typing() -> None:
     """Empty typing's caches, which are shared by every program of a worker (Literal[x], List[x],
-    ... keep their arguments): runtime calls it before each program."""
-    for clear in typing._cleanups:
-        clear()
+    ... keep their arguments): runtime calls it before each program. Only typing's objects fill
+    them, and only its stand-in hands them out (import_module): after programs that never
+    imported it there is nothing to empty (and in a fresh child, nothing to write)."""
+    if _TYPING_USED[0]:
+        for clear in typing._cleanups:
+            clear()
+        _TYPING_USED[0] = False
 
 
 _TYPING = ("Any", "Callable", "Dict", "FrozenSet", "Iterable", "Iterator", "List", "Literal", "Mapping",
@@ -261,5 +268,7 @@ def import_module(name, globals=None, locals=None, fromlist=(), level=0):
     """The `__import__` of a program's import statements (instrument.py refused every other name)."""
     if level != 0 or name not in _MEMBERS_CACHE:
         raise Forbidden(refusal(name))
+    if name == "typing":
+        _TYPING_USED[0] = True
     return load(name if fromlist else name.partition(".")[0])  # `import collections.abc` binds collections
 
