@@ -194,7 +194,7 @@ def namespace(board, init_board, name: str = "__main__") -> dict:
 
 
 # programs this process ran (_run counts): a child's first 32 bind np stand-ins the template made, one each
-# (making one copies numpy's members: page faults in a child), and find typing's caches as the template left them
+# (making one copies numpy's members: page faults in a child), and find typing's caches as the template emptied them
 RAN, NUMPY = [0], [load("numpy") for _ in range(32)]
 
 

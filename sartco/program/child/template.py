@@ -94,7 +94,6 @@ class Template:
         from .breach import breached
 
         self.runtime, self.breached = runtime, breached
-        forget_typing()  # a child's first program finds typing's caches empty (runtime.RAN)
         for name in PRELOAD:
             __import__(name)
         self.filter = confine.Walls(bpf)  # raises confine.Unconfinable
@@ -108,6 +107,7 @@ class Template:
         # fork's cost, and with one thread only (checked here) the child's interpreter is consistent as it is
         if len(sys._current_frames()) != 1:
             raise RuntimeError("the sandbox template must have one thread")
+        forget_typing()  # after every import: each program of a child finds typing's caches empty (runtime.RAN)
         gc.collect()
         gc.freeze()  # the template's objects are never collected: a child's collections touch none of them
         self.base = _vm_bytes()
