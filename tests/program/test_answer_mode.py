@@ -75,3 +75,23 @@ def test_what_an_answers_program_leaves_behind_reaches_no_verdict_after_it(attac
         if i != 3:
             assert ex.ok and ex.cells == {f"{j % 8}:{j // 8 % 8}": [["nut", "red"]]
                                           for j in [i if i < 3 else i - 1]}, (i, ex.message)
+
+
+def test_a_shared_childs_answers_are_read_for_their_error_code_as_json_reads_them():
+    import json
+
+    from sartco.program.child.batch import UNSURE, outcome
+    from sartco.program.child.runtime import encode
+
+    class Logged:
+        rows, cols, log = 8, 8, [(("nut", "red"), 0, 0), (("bridge-h", "blue"), 1, 2)]
+
+    for ok, code in [(True, None)] + [(False, c) for c in ErrorCode]:
+        for message in ("", 'line 3: "quoted", [bracketed], null'):
+            for board in (None, Logged()):
+                answer = encode(ok, code, message, board)
+                assert outcome(answer) == ("" if code is None else json.loads(answer)[1]) == (code or "")
+    assert outcome(encode(False, E.RESOURCE_LIMIT, "", None)) in UNSURE
+    # what runtime.encode never writes goes through the JSON reading: no answer
+    for other in (b"", b"[true, null", b'[false, 3, ""]', b'{"ok": true}', b"[true]", b"\xff"):
+        assert outcome(other) is None, other
