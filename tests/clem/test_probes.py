@@ -109,6 +109,25 @@ def test_repetition_probes_the_function_the_loop_calls(optimal):
     assert (result["source"], result["share"]) == ("model", 0.0)  # the answer's def wins, as when it runs
 
 
+
+def test_reading_an_answers_probes_parses_nothing_again(optimal, monkeypatch):
+    """Whose def the probed function is comes with the function itself (probe_program's kept
+    `probed_call`): once an answer's probe programs are made, reading its probes' verdicts parses
+    nothing. That reading comes after a batch's runs, while the sandbox's cores wait."""
+    from sartco.clem.core import probe_program
+    from sartco.clem.core.probes import gold_draws, probe_programs
+
+    parsed: list[str] = []
+    real = probe_program._parse
+    monkeypatch.setattr(probe_program, "_parse", lambda code: parsed.append(code) or real(code))
+    answer = GENERAL + "\n# a text no other test parses"
+    assert probe_programs(optimal, answer, gold_draws(optimal))[0] == "bn"
+    assert answer in parsed
+    parsed.clear()
+    result = run_probes(optimal, answer)
+    assert (result["function"], result["source"]) == ("bn", "model")
+    assert parsed == []
+
 def test_which_episodes_are_probed(optimal):
     assert probed(optimal) and probed(first_episode("repetition", "complex"))
     assert not probed(first_episode("sequence_function")) and not probed(first_episode("first_order"))

@@ -34,23 +34,26 @@ def _parse(code: str) -> ast.Module | None:
         return None
 
 
-def top_defs(code: str) -> set[str]:
-    """The names that `code`'s top-level defs define (none when it does not parse)."""
-    tree = _parse(code)
-    return _top_defs(tree) if tree is not None else set()
+def probed_function(code: str, given_code: str = "") -> str | None:
+    """The name of the function `code`'s usage calls (module doc), None when it calls none."""
+    found = probed_call(code, given_code)
+    return None if found is None else found[0]
 
 
 @functools.lru_cache(maxsize=4096)  # each step asks it of the episode's gold and of the answer
-def probed_function(code: str, given_code: str = "") -> str | None:
-    """The name of the function `code`'s usage calls (module doc), None when it calls none."""
+def probed_call(code: str, given_code: str = "") -> tuple[str, str] | None:
+    """The function `code`'s usage calls (module doc) and whose def it is: (name, "model") when a
+    top-level def of `code` defines it, (name, "given") when only the given code does; None when
+    it calls none. One parse of each text for both."""
     tree, given = _parse(code), _parse(given_code) or ast.Module(body=[], type_ignores=[])
     if tree is None:
         return None
-    defined = _top_defs(tree) | _top_defs(given)
+    own = _top_defs(tree)
+    defined = own | _top_defs(given)
     for statement in tree.body:
         for call in _calls(statement):
             if isinstance(call.func, ast.Name) and call.func.id in defined and _passes_board(call):
-                return call.func.id
+                return call.func.id, "model" if call.func.id in own else "given"
     return None
 
 

@@ -54,7 +54,7 @@ from sartco.program import current
 
 from . import ahead
 from .errors import HarnessFault
-from .probe_program import probe_program, probed_function, top_defs
+from .probe_program import probe_program, probed_call, probed_function
 
 PROBED_TASKS = ("optimal_function", "repetition")
 DEFAULT_PROBES = settings.PROBES
@@ -226,7 +226,8 @@ def run_probes_many(jobs: list[tuple[dict, str, GoldDraws]]) -> list[dict | Harn
     runs = {size: run_many(programs, *size, answers=labels[size]) for size, programs in batches.items()}
     out: list[dict | HarnessFault] = []
     for (instance, code, gold), (name, start, n) in zip(jobs, plans):
-        source = None if name is None else ("model" if name in top_defs(code) else "given")
+        found = probed_call(code, instance["given_code"])  # probe_programs' (kept): no parse again
+        source = None if found is None else found[1]
         probes = [{**args, "category": NO_FUNCTION, "message": "the answer calls no function"} for args, _ in gold.draws]
         executions = runs[(instance["rows"], instance["cols"])][start:start + n]
         fault = next((ex for ex in executions if ex.error == ErrorCode.HARNESS_ERROR), None)
