@@ -110,19 +110,20 @@ def test_repetition_probes_the_function_the_loop_calls(optimal):
 
 
 
-def test_reading_an_answers_probes_parses_nothing_again(optimal, monkeypatch):
-    """Whose def the probed function is comes with the function itself (probe_program's kept
-    `probed_call`): once an answer's probe programs are made, reading its probes' verdicts parses
-    nothing. That reading comes after a batch's runs, while the sandbox's cores wait."""
+def test_an_answers_probes_parse_its_code_once(optimal, monkeypatch):
+    """An answer's probe programs parse its code once (probe_program keeps the last trees), and
+    whose def the probed function is comes with the function itself (the kept `probed_call`): once
+    they are made, reading the probes' verdicts parses nothing. Both readings come while the
+    sandbox's cores wait for the parent (before a batch's first run, after its last)."""
     from sartco.clem.core import probe_program
     from sartco.clem.core.probes import gold_draws, probe_programs
 
     parsed: list[str] = []
-    real = probe_program._parse
-    monkeypatch.setattr(probe_program, "_parse", lambda code: parsed.append(code) or real(code))
+    real = probe_program.parse
+    monkeypatch.setattr(probe_program, "parse", lambda code: parsed.append(code) or real(code))
     answer = GENERAL + "\n# a text no other test parses"
     assert probe_programs(optimal, answer, gold_draws(optimal))[0] == "bn"
-    assert answer in parsed
+    assert parsed.count(answer) == 1  # the function, whose def it is and the usage to drop: one parse
     parsed.clear()
     result = run_probes(optimal, answer)
     assert (result["function"], result["source"]) == ("bn", "model")
