@@ -109,7 +109,6 @@ def test_repetition_probes_the_function_the_loop_calls(optimal):
     assert (result["source"], result["share"]) == ("model", 0.0)  # the answer's def wins, as when it runs
 
 
-
 def test_an_answers_probes_parse_its_code_once(optimal, monkeypatch):
     """An answer's probe programs parse its code once (probe_program keeps the last trees), and
     whose def the probed function is comes with the function itself (the kept `probed_call`): once
@@ -128,6 +127,7 @@ def test_an_answers_probes_parse_its_code_once(optimal, monkeypatch):
     result = run_probes(optimal, answer)
     assert (result["function"], result["source"]) == ("bn", "model")
     assert parsed == []
+
 
 def test_which_episodes_are_probed(optimal):
     assert probed(optimal) and probed(first_episode("repetition", "complex"))
