@@ -101,9 +101,9 @@ def usage(pids: list[int]) -> tuple[float, int]:
     """CPU seconds and page faults so far of the live processes `pids` and their live descendants
     (a template and its zygote), each with the children it reaped (from /proc: utime, stime,
     cutime, cstime; minflt, cminflt, majflt, cmajflt)."""
-    cpu, faults = 0.0, 0
+    cpu, faults, tick = 0.0, 0, os.sysconf("SC_CLK_TCK")
     for _, fields in _walk(pids):
-        cpu += sum(map(int, fields[11:15])) / os.sysconf("SC_CLK_TCK")
+        cpu += sum(map(int, fields[11:15])) / tick
         faults += sum(map(int, fields[7:11]))
     return cpu, faults
 
@@ -111,11 +111,11 @@ def usage(pids: list[int]) -> tuple[float, int]:
 def roles(pids: list[int]) -> tuple[float, float, float]:
     """usage()'s CPU seconds of templates `pids` in three: the templates' own, their zygotes' own,
     and the programs' processes (every process below a zygote, live or reaped)."""
-    parts = [0.0, 0.0, 0.0]
+    parts, tick = [0.0, 0.0, 0.0], os.sysconf("SC_CLK_TCK")
     for depth, fields in _walk(pids):
         own, reaped = int(fields[11]) + int(fields[12]), int(fields[13]) + int(fields[14])
-        parts[min(depth, 2)] += own / os.sysconf("SC_CLK_TCK")
-        parts[min(depth + 1, 2)] += reaped / os.sysconf("SC_CLK_TCK")
+        parts[min(depth, 2)] += own / tick
+        parts[min(depth + 1, 2)] += reaped / tick
     return parts[0], parts[1], parts[2]
 
 
