@@ -13,6 +13,8 @@ import sartco.clem.core.building as building
 import sartco.scores as scores
 from sartco.clem.core.outcomes import NoAnswer
 from sartco.clem.players.sourced import SourcedPlayer
+from sartco.games.describe.master import CobotDescribe
+from sartco.games.instruct.master import CobotInstruct
 from sartco.program import pool
 from sartco.report import tables
 from sartco.report.harness_table import HARNESS_STATUS
@@ -24,6 +26,7 @@ from paper_helpers import VARIANTS
 from paper_helpers import experiment as paper_experiment, instances as paper_instances
 
 FEEDBACK = dict(SINGLE, name="harness_feedback", attempts=3)
+GAME_MASTERS = {"cobot_instruct": CobotInstruct, "cobot_describe": CobotDescribe}
 
 
 @pytest.fixture
@@ -173,3 +176,30 @@ def test_score_responses_answers_a_harness_fault_with_an_error_line(monkeypatch,
                        {episode["id"]: episode}, score_ours)
     assert line == {"id": "f/s/single_turn", "error": "-:1: harness_error: sandbox: sandbox unavailable: "
                                                      "no worker for score-responses"}
+
+
+@pytest.mark.parametrize("game", ["cobot_instruct", "cobot_describe"])
+def test_a_fault_in_the_masters_setup_is_recorded_and_asks_no_model(play_episodes, monkeypatch, tmp_path, capsys,
+                                                                     game):
+    """clemcore drops an episode whose setup raised, without a file; ours is a harness_error episode."""
+    episodes = json.loads((GAMES / game / "in" / "instances.json").read_text())["experiments"][0]
+    experiment = {k: v for k, v in episodes.items() if k != "game_instances"}
+    first, second = episodes["game_instances"][:2]
+    master = GAME_MASTERS[game]
+    real = master._on_setup
+
+    def broken(self, **instance):
+        if instance["game_id"] == first["game_id"]:
+            raise RuntimeError("setup bug")
+        return real(self, **instance)
+
+    monkeypatch.setattr(master, "_on_setup", broken)
+    results = play_episodes([first, second], experiment, game=game)
+    _harness(results[0], "game master setup: RuntimeError: setup bug")
+    played = results[0]["interactions"]
+    assert played["sartco_build"]["category"] == "harness_error" and sum(played["Request Count"]) == 0
+    assert {(e["from"], e["to"]) for turn in played["turns"] for e in turn} == {("GM", "GM")}  # no model asked
+    assert outcome(results[1]["scores"]) == "success"  # the next episode is played as usual
+    status, err = _report(tmp_path, capsys)
+    assert status == HARNESS_STATUS and "1 harness error" in err
+    assert "game master setup: RuntimeError: setup bug" in (tmp_path / "scores" / "harness.md").read_text()

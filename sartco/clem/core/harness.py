@@ -11,6 +11,9 @@ scorer raised. Such an episode is recorded with its reason and counts as not pla
   BUILD_KEY, a board event for the transcript, Aborted 1 (clemcore: not played) and the
   interactions.json written as usual; a `NoAnswer` answer takes the same path before the game
   master sees it (the turn's messages and the request logged as clemcore's step logs them; no parse);
+  so does a fault of the game master's setup, at the episode's first step: clemcore drops an
+  episode whose setup raised (no record at all), so `HarnessGuard.setup` keeps the reason and seats
+  one `SetupFailed` player, which asks no model;
 - scoring (`sartco.clem.core.scoring.BuildScorer.compute_scores`, every scorer's base): an exception
   replaces the episode's scores with `harness_scores`: Main Score and the build scores NaN,
   Aborted 1, Error Category harness_error, its reason under HARNESS_REASON.
@@ -22,7 +25,8 @@ import math
 import traceback
 from pathlib import Path
 
-from clemcore.clemgame import metrics
+from clemcore.backends import CustomResponseModel
+from clemcore.clemgame import Player, metrics
 
 from sartco.episode import BUILD_SCORES, ERROR_CATEGORY, ERROR_FAMILY, HARNESS_REASON, PUTS
 from sartco.program.execution import clean
@@ -55,10 +59,22 @@ class HarnessGuard:
 
     def setup(self, **instance):
         self.harness_instance = instance  # the target and board size of the record of a fault
-        super().setup(**instance)
+        self.setup_fault: str | None = None
+        try:
+            super().setup(**instance)
+        except Exception as exc:  # recorded at the first step: clemcore would drop the episode
+            self.setup_fault = fault_reason("game master setup", exc)
+            self.players_by_names.clear()
+            self.context_for_player.clear()
+            self._current_player_idx = 0
+            self._current_player = SetupFailed()
+            self.add_player(self._current_player, initial_context=self.setup_fault)
+            self.state.game_id = instance.get("game_id")
 
     def step(self, response):
         try:
+            if self.setup_fault is not None:
+                raise HarnessFault(self.setup_fault)
             if isinstance(response, NoAnswer):  # the model server gave none: the model is not charged
                 self.log_gm_to_player(self.get_context_for(self.current_player), self.current_player)
                 self.log_player_to_gm(response, self.current_player)  # as clemcore's step: the turn's
@@ -71,6 +87,18 @@ class HarnessGuard:
             log_outcome(self)
             self.log_game_end()
             return True, {}
+
+
+class SetupFailed(Player):
+    """The one player of an episode whose setup raised (HarnessGuard.setup). Its model answers in
+    this process (a CustomResponseModel: no request in either of clemcore's runners), and its answer
+    is never read: the first step records the fault."""
+
+    def __init__(self):
+        super().__init__(CustomResponseModel())
+
+    def _custom_response(self, context) -> str:
+        return ""
 
 
 def harness_scores(scorer, reason: str) -> None:

@@ -67,6 +67,15 @@ def build_scores(record: BuildRecord | None, aborted: bool) -> dict:
             CELL_F1: record.f1, ERROR_CATEGORY: record.category, ERROR_FAMILY: record.family, PUTS: record.puts}
 
 
+def _played_fault(interactions: dict) -> str | None:
+    """The reason of the harness fault recorded while the episode was played, if it was one."""
+    try:
+        record = BuildRecord.from_json(interactions[BUILD_KEY])
+    except Exception:  # no record, or one the scorer cannot read: the scorer's own fault is the reason
+        return None
+    return record.message if record.category == ErrorCode.HARNESS_ERROR else None
+
+
 def probe_scores(probes: dict | None) -> dict:
     """Function Generalisation, Probe Categories, Probe Function of a probed episode from its
     probes record (sartco.clem.core.probes.run_probes; None when aborted or nothing was probed:
@@ -83,11 +92,12 @@ class BuildScorer(GameScorer):
     def compute_scores(self, interactions: dict) -> None:
         """clemcore's scoring, unchanged, inside the one guard of every scorer of ours: an exception
         makes the episode a harness_error (sartco.clem.core.harness), never a model's score or a lost
-        scores.json."""
+        scores.json. An episode recorded as a harness fault while it was played keeps that reason
+        (a setup fault made no request, and clemcore's request ratios then divide by zero)."""
         try:
             super().compute_scores(interactions)
         except Exception as exc:  # a fault of the scorer, never the model's
-            harness_scores(self, fault_reason("scorer", exc))
+            harness_scores(self, _played_fault(interactions) or fault_reason("scorer", exc))
 
     def compute_round_score(self, round_idx, round_events) -> None:
         pass  # the build is judged once, at the end of the episode
