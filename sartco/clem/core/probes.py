@@ -213,21 +213,20 @@ def run_probes_many(jobs: list[tuple[dict, str, GoldDraws]]) -> list[dict | Harn
     size, in input order; an answer whose probe the sandbox failed gets its HarnessFault."""
     from .sandbox import judge, run_many
 
-    plans: list[tuple[str | None, int, int]] = []
+    plans: list[tuple[str | None, str | None, int, int]] = []
     batches: dict[tuple[int, int], list[str]] = {}
     labels: dict[tuple[int, int], list[int]] = {}
     for job, (instance, code, gold) in enumerate(jobs):
         rows, cols = instance["rows"], instance["cols"]
         name, programs = probe_programs(instance, code, gold)
+        found = probed_call(code, instance["given_code"])  # probe_programs' own call, kept: whose def it is
         batch = batches.setdefault((rows, cols), [])
-        plans.append((name, len(batch), len(programs)))
+        plans.append((name, None if found is None else found[1], len(batch), len(programs)))
         batch.extend(programs)
         labels.setdefault((rows, cols), []).extend([job] * len(programs))  # one answer's probes may share a child
     runs = {size: run_many(programs, *size, answers=labels[size]) for size, programs in batches.items()}
     out: list[dict | HarnessFault] = []
-    for (instance, code, gold), (name, start, n) in zip(jobs, plans):
-        found = probed_call(code, instance["given_code"])  # probe_programs' (kept): no parse again
-        source = None if found is None else found[1]
+    for (instance, code, gold), (name, source, start, n) in zip(jobs, plans):
         probes = [{**args, "category": NO_FUNCTION, "message": "the answer calls no function"} for args, _ in gold.draws]
         executions = runs[(instance["rows"], instance["cols"])][start:start + n]
         fault = next((ex for ex in executions if ex.error == ErrorCode.HARNESS_ERROR), None)
