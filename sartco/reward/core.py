@@ -158,24 +158,24 @@ def score(pairs: Iterable[tuple[str, str | Sequence[str]]], episodes: Episodes, 
                 plans[k] = (episodes[key], job.builder_code, episodes.gold_draws(key))
             except HarnessFault as fault:
                 results[k] = fault
-    with together(_answer_programs(jobs, plans)):  # one child per answer
+    probe = {k: probe_programs(*plan) for k, plan in plans.items()}  # (its function, its programs)
+    with together(_answer_programs(jobs, probe)):  # one child per answer
         records = build_jobs(jobs)
         places = [k for k in plans if records[k].error != ErrorCode.HARNESS_ERROR]
-        for k, result in zip(places, run_probes_many([plans[k] for k in places])):
+        for k, result in zip(places, run_probes_many([plans[k] for k in places], [probe[k] for k in places])):
             results[k] = result
     return [reward_of(key, record, probed(episodes[key]) and probes, result)
             for (key, _), record, result in zip(pairs, records, results)]
 
 
 def _answer_programs(jobs: list[BuildJob | BuildRecord],
-                     plans: Mapping[int, tuple[dict, str, GoldDraws]]) -> Iterator[tuple[list[str], int, int]]:
-    """Per answer with code: its build's program and its probe programs, and its board size
-    (sartco.clem.core.sandbox.together runs them in one child; the build and the probes then take
-    their Executions)."""
+                     probe: Mapping[int, tuple[str | None, list[str]]]) -> Iterator[tuple[list[str], int, int]]:
+    """Per answer with code: its build's program and its probe programs (`probe`: probe_programs'
+    by answer), and its board size (sartco.clem.core.sandbox.together runs them in one child; the
+    build and the probes then take their Executions)."""
     for k, job in enumerate(jobs):
         if isinstance(job, BuildJob):
-            probe = probe_programs(*plans[k])[1] if k in plans else []
-            yield [program_of(job), *probe], job.rows, job.cols
+            yield [program_of(job), *(probe[k][1] if k in probe else [])], job.rows, job.cols
 
 
 def reward_of(key: str, record: BuildRecord, is_probed: bool, probe_result) -> Reward:

@@ -72,7 +72,13 @@ def without_usage(code: str, name: str) -> str:
     return "\n".join(line for i, line in enumerate(lines) if i not in drop)
 
 
-def probe_program(code: str, name: str, args: dict, *, given_code: str, rows: int, cols: int) -> str:
-    parts = [given_code.strip(), without_usage(code, name).strip(), f"board = init_board({rows}, {cols})",
-             f"{name}(board, {list(args['colors'])!r}, {args['x']}, {args['y']})"]
+def probe_head(code: str, name: str, *, given_code: str, rows: int, cols: int) -> str:
+    """A probe program but its last line (the same for each of an answer's probes): the given code,
+    the answer without its usage, a fresh board."""
+    parts = [given_code.strip(), without_usage(code, name).strip(), f"board = init_board({rows}, {cols})"]
     return "\n".join(p for p in parts if p) + "\n"
+
+
+def probe_call(name: str, args: dict) -> str:
+    """A probe program's last line: the function at the probe's arguments."""
+    return f"{name}(board, {list(args['colors'])!r}, {args['x']}, {args['y']})\n"

@@ -13,9 +13,11 @@ the program runs) defines, with `board` as its first argument (or `board=`). The
 is found by the same rule in the gold program. A repetition answer that calls the given function
 without redefining it probes the given function (`Probe Function` says whose it is).
 
-The probe program (`probe_program`, probe_program.py): the given code, the answer without its usage statements
-(the top-level statements that call the function), a fresh `board = init_board(rows, cols)`,
-then `f(board, [colours], x, y)` - the signature (board, colors, x, y) every prompt gives.
+The probe program (`probe_head`, then `probe_call`, probe_program.py): the given code, the answer
+without its usage statements (the top-level statements that call the function), a fresh
+`board = init_board(rows, cols)`, then `f(board, [colours], x, y)` - the signature (board,
+colors, x, y) every prompt gives. The head is the same for each of an answer's probes and each
+of a draw's candidates (the sandbox compiles it once for them).
 
 The arguments (`draw_arguments`): candidates drawn by random.Random(f"{seed}/{board_id}/{task}")
 (seed PROBE_SEED): an anchor anywhere on the board and one colour per piece of the object (its
@@ -54,7 +56,7 @@ from sartco.program import current
 
 from . import ahead
 from .errors import HarnessFault
-from .probe_program import probe_program, probed_call, probed_function
+from .probe_program import probe_call, probe_head, probed_call, probed_function
 
 PROBED_TASKS = ("optimal_function", "repetition")
 DEFAULT_PROBES = settings.PROBES
@@ -89,11 +91,11 @@ def draw_arguments(instance: dict, gold: str, name: str, k: int, seed: int = PRO
     rng = random.Random(f"{seed}/{instance['board_id']}/{instance['task']}")
     kept: list[tuple[dict, dict]] = []
     boards = [instance["target"]]
+    head = probe_head(gold, name, given_code=instance["given_code"], rows=rows, cols=cols)
     for _ in range(ROUNDS):
         candidates = [{"colors": [rng.choice(COLORS) for _ in range(n)], "x": rng.randrange(rows),
                        "y": rng.randrange(cols)} for _ in range(CANDIDATES * k)]
-        runs = run_many([probe_program(gold, name, a, given_code=instance["given_code"], rows=rows, cols=cols)
-                         for a in candidates], rows, cols, gold=True)
+        runs = run_many([head + probe_call(name, a) for a in candidates], rows, cols, gold=True)
         for args, ex in zip(candidates, runs):
             if ex.error == ErrorCode.HARNESS_ERROR:
                 raise HarnessFault(f"sandbox (gold probe): {ex.message}")
@@ -204,13 +206,17 @@ def probe_programs(instance: dict, code: str, gold: GoldDraws) -> tuple[str | No
     when it calls no function)."""
     given = instance["given_code"]
     name = probed_function(code, given)
-    return name, [] if name is None else [probe_program(code, name, a, given_code=given, rows=instance["rows"],
-                                                        cols=instance["cols"]) for a, _ in gold.draws]
+    if name is None:
+        return None, []
+    head = probe_head(code, name, given_code=given, rows=instance["rows"], cols=instance["cols"])
+    return name, [head + probe_call(name, a) for a, _ in gold.draws]
 
 
-def run_probes_many(jobs: list[tuple[dict, str, GoldDraws]]) -> list[dict | HarnessFault]:
+def run_probes_many(jobs: list[tuple[dict, str, GoldDraws]],
+                    made: list[tuple[str | None, list[str]]] | None = None) -> list[dict | HarnessFault]:
     """`run_probes` of many (instance, answer code, gold draws) in one sandbox batch per board
-    size, in input order; an answer whose probe the sandbox failed gets its HarnessFault."""
+    size, in input order; an answer whose probe the sandbox failed gets its HarnessFault.
+    `made`: `probe_programs` of each job, when the caller has them already."""
     from .sandbox import judge, run_many
 
     plans: list[tuple[str | None, str | None, int, int]] = []
@@ -218,7 +224,7 @@ def run_probes_many(jobs: list[tuple[dict, str, GoldDraws]]) -> list[dict | Harn
     labels: dict[tuple[int, int], list[int]] = {}
     for job, (instance, code, gold) in enumerate(jobs):
         rows, cols = instance["rows"], instance["cols"]
-        name, programs = probe_programs(instance, code, gold)
+        name, programs = probe_programs(instance, code, gold) if made is None else made[job]
         found = probed_call(code, instance["given_code"])  # probe_programs' own call, kept: whose def it is
         batch = batches.setdefault((rows, cols), [])
         plans.append((name, None if found is None else found[1], len(batch), len(programs)))
