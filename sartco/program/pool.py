@@ -3,9 +3,8 @@ program (child/template.py), batches split over them; and the module-level execu
 of the sandbox in use (sandbox.py).
 
 `execute_many` compiles a big call in parts (`parts`: FIRST programs, then twice as many each
-time) and hands each part to `dispatch` on a daemon thread of its own as soon as it is compiled,
-after the part before it (`_Fed`), so the templates run one part while the parent compiles the
-next (a call of one part: in the caller's thread, as before).
+time), each handed to `dispatch` by a daemon thread once it is compiled and the part before it has
+run (`_Fed`): the templates run one part while the parent compiles the next.
 
 `LocalSandbox.dispatch` sends programs in chunks (a header line + one line per program) to up to
 `workers` templates (default: min(2, CPUs)), each driven by one thread that reads the answers while
@@ -59,8 +58,7 @@ class LocalSandbox:
     `breach=True` only for the assume-breach tests (child/template.py's mode "breach")."""
 
     def __init__(self, workers: int | None = None, breach: bool = False):
-        self.workers = workers
-        self.breach = breach
+        self.workers, self.breach = workers, breach
         self._templates: list[TemplateHandle] = []
         self._pid = os.getpid()
         self._lock = threading.Lock()
@@ -193,19 +191,23 @@ class LocalSandbox:
             cuts = parts(todo, labels)
             made: dict[int, bytes | Execution] = {}
             running: list[tuple[list[int], _Fed]] = []
-            for part in cuts:
-                made.update(zip(part, [json.dumps(programs[i]).encode() for i in part] if mode == "breach" else
-                                compiled.prepare_all([programs[i] for i in part], limits)))
-                run = [i for i in part if type(made[i]) is bytes]
-                if run:
-                    job = partial(dispatch, self, [made[i] for i in run], rows, cols, limits, workers, semantics,
-                                  mode, None if labels is None else [labels[i] for i in run])
-                    if len(cuts) == 1:  # in the caller's thread, as a call was before the parts
-                        made.update(zip(run, job()))
-                    else:
-                        running.append((run, _Fed(job, running[-1][1] if running else None)))
-            for run, fed in running:
-                made.update(zip(run, fed.result()))
+            stop = threading.Event()  # set when the call ends: a part not sent by then is not sent
+            try:
+                for part in cuts:
+                    made.update(zip(part, [json.dumps(programs[i]).encode() for i in part] if mode == "breach" else
+                                    compiled.prepare_all([programs[i] for i in part], limits)))
+                    run = [i for i in part if type(made[i]) is bytes]
+                    if run:
+                        job = partial(dispatch, self, [made[i] for i in run], rows, cols, limits, workers, semantics,
+                                      mode, None if labels is None else [labels[i] for i in run])
+                        if len(cuts) == 1:  # in the caller's thread, as a call was before the parts
+                            made.update(zip(run, job()))
+                        else:
+                            running.append((run, _Fed(job, running[-1][1] if running else None, stop)))
+                for run, fed in running:
+                    made.update(zip(run, fed.result()))
+            finally:  # (early: Ctrl-C, or a part that failed; what follows would be thrown away)
+                stop.set()
             for i in todo:
                 results[i] = answer = made[i]
                 if cache and type(answer) is Execution:
@@ -243,10 +245,10 @@ def parts(todo: list[int], labels: list[object] | None = None) -> list[list[int]
 class _Fed:
     """The dispatch of one part (`job`) on a daemon thread of its own, after the part before it:
     as dispatch's own threads are daemons, a caller interrupted meanwhile (Ctrl-C) and a process
-    that ends do not wait for it."""
+    that ends do not wait for it. Not sent once the call has ended or a part failed (`stop`)."""
 
-    def __init__(self, job: Callable[[], list[Execution]], before: _Fed | None):
-        self._job, self._before = job, before
+    def __init__(self, job: Callable[[], list[Execution]], before: _Fed | None, stop: threading.Event):
+        self._job, self._before, self._stop = job, before, stop
         self._out: list[Execution] | BaseException = []
         self._thread = threading.Thread(target=self._run, daemon=True, name="sartco-feeder")
         self._thread.start()
@@ -254,10 +256,13 @@ class _Fed:
     def _run(self) -> None:
         if self._before is not None:
             self._before._thread.join()
+        if self._stop.is_set():  # the call has ended, or a part before this one failed: no one reads this one
+            return
         try:
             self._out = self._job()
         except BaseException as exc:  # raised by result(), in the caller's thread
             self._out = exc
+            self._stop.set()
 
     def result(self) -> list[Execution]:
         self._thread.join()

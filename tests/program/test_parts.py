@@ -87,8 +87,15 @@ def test_a_call_in_parts_gives_the_verdicts_of_one_call(spied, monkeypatch):
         assert not set(part) & set(sum(sent[k + 1:], []))
 
 
+def _feeders_ended() -> None:
+    for thread in threading.enumerate():
+        if thread.name == "sartco-feeder":
+            thread.join(10)
+
+
 def test_a_part_whose_templates_fail_makes_every_verdict_a_harness_error(spied, monkeypatch):
-    """Nothing raises out of execute_many, whichever part's dispatch fails."""
+    """Nothing raises out of execute_many, whichever part's dispatch fails; the parts after it
+    are not sent (their verdicts would be thrown away)."""
     calls = spied
     real = pool.dispatch
     raised = []
@@ -105,39 +112,52 @@ def test_a_part_whose_templates_fail_makes_every_verdict_a_harness_error(spied, 
         results = box.execute_many([_benign(k) + f"\nz = {k}" for k in range(30)], cache=False)
     finally:
         box.close()
-    assert len(calls) == 1 and raised[0] == 16  # the first part ran, the second (and the third) failed
+    _feeders_ended()
+    assert len(calls) == 1 and raised == [16]  # the first part ran, the second failed, the third was not sent
     assert {(ex.error, ex.message) for ex in results} == {
         (E.HARNESS_ERROR, "sandbox failure: OSError: the templates are gone")}
 
 
-def test_an_interrupted_call_does_not_wait_for_the_parts_it_sent(spied, monkeypatch):
-    """Ctrl-C while the parent compiles a later part: the call ends at once, and the part already
-    sent goes on in a daemon thread (a process that ends does not wait for it)."""
+@pytest.mark.parametrize("where", ["compiling", "waiting"])
+def test_an_interrupted_call_does_not_wait_for_the_part_it_sent_and_sends_no_other(spied, monkeypatch, where):
+    """Ctrl-C while the parent compiles a later part, or while it waits for a part's verdicts: the
+    call ends at once, the part already sent goes on in a daemon thread (a process that ends does
+    not wait for it), and no later part is sent (a trainer interrupted in a notebook leaves no
+    call running on)."""
     running, finished, release = threading.Event(), threading.Event(), threading.Event()
-    compiles = []
+    compiles, sent = [], []
     prepare_all = pool.compiled.prepare_all
 
     def blocked(sandbox, items, *args):
-        running.set()
-        release.wait(5)
-        finished.set()
+        sent.append(len(items))
+        if len(sent) == 1:
+            running.set()
+            release.wait(5)
+            finished.set()
         return [failed(E.HARNESS_ERROR, "not run") for _ in items]
 
-    def interrupted(sources, limits):
+    def interrupted(*args):
+        running.wait(5)
+        raise KeyboardInterrupt
+
+    def compiled(sources, limits):
         compiles.append(len(sources))
-        if len(compiles) == 2:
-            running.wait(5)
-            raise KeyboardInterrupt
-        return prepare_all(sources, limits)
+        return interrupted() if len(compiles) == 2 else prepare_all(sources, limits)
 
     monkeypatch.setattr(pool, "dispatch", blocked)
-    monkeypatch.setattr(pool.compiled, "prepare_all", interrupted)
+    if where == "compiling":
+        monkeypatch.setattr(pool.compiled, "prepare_all", compiled)
+    else:
+        monkeypatch.setattr(pool._Fed, "result", interrupted)
     box = pool.LocalSandbox(workers=1)
     try:
         with pytest.raises(KeyboardInterrupt):
             box.execute_many([_benign(k) + f"\nz = {k}" for k in range(30)], cache=False)
         assert running.is_set() and not finished.is_set()
-        assert [t.daemon for t in threading.enumerate() if t.name == "sartco-feeder"] == [True]
+        assert all(t.daemon for t in threading.enumerate() if t.name == "sartco-feeder")
+        release.set()
+        _feeders_ended()
+        assert sent == [8]  # parts of 8, 16 and 6 programs: only the first was sent
     finally:
         release.set()
         box.close()
