@@ -10,6 +10,7 @@ import pytest
 from harness_helpers import fake_worker, no_worker
 
 import sartco.clem.core.building as building
+import sartco.clem.core.master as core_master
 import sartco.scores as scores
 from sartco.clem.core.outcomes import NoAnswer
 from sartco.clem.players.sourced import SourcedPlayer
@@ -194,7 +195,10 @@ def test_a_fault_in_the_masters_setup_is_recorded_and_asks_no_model(play_episode
         return real(self, **instance)
 
     monkeypatch.setattr(master, "_on_setup", broken)
+    ahead = []  # the episodes whose work ahead (gold draws) was started
+    monkeypatch.setattr(core_master, "draw_ahead", lambda instance: ahead.append(instance["game_id"]))
     results = play_episodes([first, second], experiment, game=game)
+    assert ahead == [second["game_id"]]  # none for an episode that plays no step
     _harness(results[0], "game master setup: RuntimeError: setup bug")
     played = results[0]["interactions"]
     assert played["sartco_build"]["category"] == "harness_error" and sum(played["Request Count"]) == 0

@@ -38,7 +38,8 @@ class BuildGameMaster(ScoreCard, HarnessGuard, MarkdownTranscript, DialogueGameM
 
     def setup(self, **instance):
         super().setup(**instance)
-        # made while the model's first request is out (ahead.py): a probed episode's gold draws,
-        # the gold program's half of CodeBLEU
-        draw_ahead(instance)
-        ahead.submit(partial(analyse_gold, instance.get("gold_code")))
+        if self.setup_fault is None:  # (an episode whose setup failed plays no step that would take them)
+            # made while the model's first request is out (ahead.py): a probed episode's gold draws,
+            # the gold program's half of CodeBLEU
+            draw_ahead(instance)
+            ahead.submit(partial(analyse_gold, instance.get("gold_code")))
