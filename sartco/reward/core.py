@@ -23,7 +23,7 @@ from sartco.clem.core.building import (BuildJob, BuildRecord, answers_job, build
 from sartco.clem.core.harness import fault_reason
 from sartco.clem.core.errors import HarnessFault
 from sartco.clem.core.outcomes import outcome_for
-from sartco.clem.core.probes import GoldDraws, gold_draws, probe_programs, probed, run_probes_many
+from sartco.clem.core.probes import GoldDraws, Probes, gold_draws, probe_programs, probed, run_probes_many
 from sartco.clem.core.sandbox import together
 from sartco.clem.core.scoring import build_scores, probe_scores
 from sartco.collector import paused
@@ -158,7 +158,7 @@ def score(pairs: Iterable[tuple[str, str | Sequence[str]]], episodes: Episodes, 
                 plans[k] = (episodes[key], job.builder_code, episodes.gold_draws(key))
             except HarnessFault as fault:
                 results[k] = fault
-    probe = {k: probe_programs(*plan) for k, plan in plans.items()}  # (its function, its programs)
+    probe = {k: probe_programs(*plan) for k, plan in plans.items()}  # (its function, whose def, its programs)
     with together(_answer_programs(jobs, probe)):  # one child per answer
         records = build_jobs(jobs)
         places = [k for k in plans if records[k].error != ErrorCode.HARNESS_ERROR]
@@ -169,13 +169,13 @@ def score(pairs: Iterable[tuple[str, str | Sequence[str]]], episodes: Episodes, 
 
 
 def _answer_programs(jobs: list[BuildJob | BuildRecord],
-                     probe: Mapping[int, tuple[str | None, list[str]]]) -> Iterator[tuple[list[str], int, int]]:
+                     probe: Mapping[int, Probes]) -> Iterator[tuple[list[str], int, int]]:
     """Per answer with code: its build's program and its probe programs (`probe`: probe_programs'
     by answer), and its board size (sartco.clem.core.sandbox.together runs them in one child; the
     build and the probes then take their Executions)."""
     for k, job in enumerate(jobs):
         if isinstance(job, BuildJob):
-            yield [program_of(job), *(probe[k][1] if k in probe else [])], job.rows, job.cols
+            yield [program_of(job), *(probe[k][2] if k in probe else [])], job.rows, job.cols
 
 
 def reward_of(key: str, record: BuildRecord, is_probed: bool, probe_result) -> Reward:

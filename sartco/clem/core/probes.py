@@ -201,19 +201,23 @@ def run_probes(instance: dict, code: str, seed: int = PROBE_SEED) -> dict:
     return result
 
 
-def probe_programs(instance: dict, code: str, gold: GoldDraws) -> tuple[str | None, list[str]]:
-    """The function an answer's `code` probes and its probe programs, one per gold draw (none
-    when it calls no function)."""
+Probes = tuple[str | None, str | None, list[str]]  # probe_programs': function, whose def, programs
+
+
+def probe_programs(instance: dict, code: str, gold: GoldDraws) -> Probes:
+    """The function an answer's `code` probes, whose def it is ("model" or "given": probed_call)
+    and its probe programs, one per gold draw (None, None and none when it calls no function)."""
     given = instance["given_code"]
-    name = probed_function(code, given)
-    if name is None:
-        return None, []
+    found = probed_call(code, given)
+    if found is None:
+        return None, None, []
+    name, source = found
     head = probe_head(code, name, given_code=given, rows=instance["rows"], cols=instance["cols"])
-    return name, [head + probe_call(name, a) for a, _ in gold.draws]
+    return name, source, [head + probe_call(name, a) for a, _ in gold.draws]
 
 
 def run_probes_many(jobs: list[tuple[dict, str, GoldDraws]],
-                    made: list[tuple[str | None, list[str]]] | None = None) -> list[dict | HarnessFault]:
+                    made: list[Probes] | None = None) -> list[dict | HarnessFault]:
     """`run_probes` of many (instance, answer code, gold draws) in one sandbox batch per board
     size, in input order; an answer whose probe the sandbox failed gets its HarnessFault.
     `made`: `probe_programs` of each job, when the caller has them already."""
@@ -224,10 +228,9 @@ def run_probes_many(jobs: list[tuple[dict, str, GoldDraws]],
     labels: dict[tuple[int, int], list[int]] = {}
     for job, (instance, code, gold) in enumerate(jobs):
         rows, cols = instance["rows"], instance["cols"]
-        name, programs = probe_programs(instance, code, gold) if made is None else made[job]
-        found = probed_call(code, instance["given_code"])  # probe_programs' own call, kept: whose def it is
+        name, source, programs = probe_programs(instance, code, gold) if made is None else made[job]
         batch = batches.setdefault((rows, cols), [])
-        plans.append((name, None if found is None else found[1], len(batch), len(programs)))
+        plans.append((name, source, len(batch), len(programs)))
         batch.extend(programs)
         labels.setdefault((rows, cols), []).extend([job] * len(programs))  # one answer's probes may share a child
     runs = {size: run_many(programs, *size, answers=labels[size]) for size, programs in batches.items()}
