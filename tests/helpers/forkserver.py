@@ -1,7 +1,7 @@
 """Command processes for the tests, forked from a warm parent: `command(args, ...)` is
 subprocess.run(args, capture_output=True, text=True, ...) for a Python program (a script whose
 #! line names a Python interpreter, such as the `clem` and `sartco` scripts of a venv, `python -m
-MODULE`, `python SCRIPT.py`), and costs about 0.5 s instead of 4 for a `clem` command.
+MODULE`, `python SCRIPT.py`): `clem list games` takes 1.6 s of CPU so, 4.5-5 s as a fresh process.
 
 Why: a `clem` process spends about 3.4 s of its 4 importing clemcore.clemgame, 3.0 s of them in
 one third-party package it imports, openenv.core (gradio, fastmcp, uvicorn, pandas; `python -X
@@ -41,7 +41,14 @@ import sys
 import time
 from pathlib import Path
 
-PRELOAD = ("openenv.core",)
+# What a `clem` or `sartco` command imports that is third-party, reads nothing of its folder or
+# environment at import, and takes longest (`python -X importtime -c "import clemcore.clemgame"`):
+# openenv.core about 3 s, then, in a process that holds it, gymnasium.spaces and pettingzoo (the
+# PettingZoo env) 0.19 s, requests 0.14 s and nltk 0.15 s of clemcore.clemgame's other 0.43 s
+# (29 Nov 2026: openenv.core alone, 1.85-1.91 s a forked `clem list games`; all five, 1.58-1.64 s).
+# gymnasium and pettingzoo set two of pygame's variables in os.environ at import; a child's
+# environment is its request's, without them (nothing here runs pygame).
+PRELOAD = ("openenv.core", "gymnasium.spaces", "pettingzoo", "requests", "nltk")
 _servers: dict[tuple, tuple[subprocess.Popen, socket.socket]] = {}   # by interpreter and PYTHON* variables
 
 
