@@ -45,10 +45,13 @@ from pathlib import Path
 # environment at import, and takes longest (`python -X importtime -c "import clemcore.clemgame"`):
 # openenv.core about 3 s, then, in a process that holds it, gymnasium.spaces and pettingzoo (the
 # PettingZoo env) 0.19 s, requests 0.14 s and nltk 0.15 s of clemcore.clemgame's other 0.43 s
-# (29 Nov 2026: openenv.core alone, 1.85-1.91 s a forked `clem list games`; all five, 1.58-1.64 s).
+# (29 Nov 2026: openenv.core alone, 1.85-1.91 s a forked `clem list games`; all five, 1.58-1.64 s);
+# and openai, 0.57 s of every command that plays a model through a server (the stub's).
 # gymnasium and pettingzoo set two of pygame's variables in os.environ at import; a child's
-# environment is its request's, without them (nothing here runs pygame).
-PRELOAD = ("openenv.core", "gymnasium.spaces", "pettingzoo", "requests", "nltk")
+# environment is its request's, without them (nothing here runs pygame). openai reads the
+# settings of its module-level client (OPENAI_API_TYPE, ...) at import; clemcore makes clients
+# of its own from key.json.
+PRELOAD = ("openenv.core", "gymnasium.spaces", "pettingzoo", "requests", "nltk", "openai")
 _servers: dict[tuple, tuple[subprocess.Popen, socket.socket]] = {}   # by interpreter and PYTHON* variables
 
 
