@@ -43,6 +43,21 @@ def test_load_dataset_names_a_missing_manifest_or_file(tmp_path):
     assert files == {"simple_simple_test.json": [rec("s0", A), rec("s1", B)]}
 
 
+def test_a_dataset_is_read_once_until_one_of_its_files_changes(tmp_path, monkeypatch):
+    """The instance generators write several files from one dataset (storage.loaded_dataset)."""
+    (tmp_path / "manifest.json").write_text(storage.dumps({"files": {"simple_simple_test.json": 1}}))
+    (tmp_path / "simple_simple_test.json").write_text(storage.dumps_records([rec("s0", A)]))
+    read = []
+    monkeypatch.setattr(storage, "_read_json", lambda path, real=storage._read_json: read.append(path.name) or real(path))
+    first = storage.loaded_dataset(tmp_path)
+    assert storage.loaded_dataset(str(tmp_path)) is first and first == storage.load_dataset(tmp_path)
+    assert read == ["manifest.json", "simple_simple_test.json"] * 2   # loaded_dataset's once, load_dataset's
+    (tmp_path / "simple_simple_test.json").write_text(storage.dumps_records([rec("s0", A), rec("s1", B)]))
+    assert storage.loaded_dataset(tmp_path)[1] == {"simple_simple_test.json": [rec("s0", A), rec("s1", B)]}
+    with pytest.raises(UserError, match="no dataset manifest"):   # a folder that is none: said, not kept
+        storage.loaded_dataset(tmp_path / "none")
+
+
 def _board(rows, cols, put=""):
     return {"total_code": f"board = init_board({rows}, {cols})\n{put}"}
 

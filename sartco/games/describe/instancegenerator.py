@@ -40,7 +40,7 @@ from sartco.dataset import BOARD_KINDS, DESCRIBED_TASK, experiment_name
 from sartco.episode import DescribeEpisode, DescribeExperiment
 from sartco.instances.examples import select_examples
 from sartco.instances.prompts import builder_prompt, describer_prompt, instruction_text
-from sartco.instances.storage import load_dataset
+from sartco.instances.storage import loaded_dataset
 
 from .dialogue import INSTRUCTION_SLOT, MODES, clarify_note
 
@@ -59,7 +59,7 @@ def modes_file(gen: InstanceGenerator, seed: int, dataset: Path, examples: int, 
     """The experiments of `modes` (ONESHOT or DIALOGUE), game_id counted from 0 in each;
     per_experiment boards of the split, chosen by `pick` (spread over it, or the first)."""
     gen.source = dataset
-    manifest, files = load_dataset(dataset)
+    manifest, files = loaded_dataset(dataset)
     gen.instances["dataset"] = {"version": manifest["version"], "seed": manifest["seed"],
                                 "source": manifest["source"], "split": "test"}
     gen.instances["seed"] = seed

@@ -48,7 +48,7 @@ from sartco.episode import InstructEpisode, InstructExperiment
 from sartco.errors import UserError
 from sartco.instances.examples import MAX_EXAMPLES, select_examples
 from sartco.instances.prompts import SECTIONS, builder_prompt, builder_turn, gold_code, instruction_text
-from sartco.instances.storage import load_dataset
+from sartco.instances.storage import loaded_dataset
 from sartco.settings import workspace
 
 DEFAULT_PUBLISHED = workspace() / "instances" / "published"   # `sartco import ../shared/sartco-data/published --out ...`
@@ -148,7 +148,7 @@ def dataset_info(manifest: dict, path: Path, seed: int, n_examples: int, example
 def _generated(gen: InstructFile, seed: int, dataset_dir: Path, n_examples: int):
     """The generated dataset's files, the train pools of the in-context examples, and the
     dataset as the file records it (the file's `dataset` until a build names another one)."""
-    manifest, files = load_dataset(dataset_dir)
+    manifest, files = loaded_dataset(dataset_dir)
     info = gen.instances["dataset"] = dataset_info(manifest, dataset_dir, seed, n_examples)
     return files, {kind: records(dataset_dir, files, kind, "train") for kind in BOARD_KINDS}, info
 
@@ -195,7 +195,7 @@ def published(gen: InstructFile, seed: int, dataset_dir: Path, n_examples: int, 
     """The human- and model-written cells of Table 3 from the imported published data."""
     gen.source = published_dir
     _, pools, info = _generated(gen, seed, dataset_dir, n_examples)
-    pub_manifest, pub_files = load_dataset(published_dir)
+    pub_manifest, pub_files = loaded_dataset(published_dir)
     pub_info = gen.instances["dataset"] = dataset_info(pub_manifest, published_dir, seed, n_examples,
                                                        examples_from=info)
     for kind, task, _, sources in CELLS:
@@ -210,7 +210,7 @@ def described(gen: InstructFile, seed: int, dataset_dir: Path, n_examples: int, 
     named <cell>_<task>_<model>, with the builder task cobot_describe gives (DESCRIBED_TASK)."""
     gen.source = describers_dir
     _, pools, info = _generated(gen, seed, dataset_dir, n_examples)
-    manifest, files = load_dataset(describers_dir)
+    manifest, files = loaded_dataset(describers_dir)
     if manifest.get("source") != "describer":
         raise UserError(f"{describers_dir}: not a describer dataset (manifest source {manifest.get('source')!r})")
     d_info = gen.instances["dataset"] = dataset_info(manifest, describers_dir, seed, n_examples, examples_from=info)
