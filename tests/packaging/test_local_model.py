@@ -41,8 +41,9 @@ class H(BaseHTTPRequestHandler):
         global seen
         self.rfile.read(int(self.headers.get("Content-Length") or 0))
         seen += 1
-        if seen == CRASH_AT:
+        if seen == CRASH_AT:   # the kernel may end the process from its main thread a moment later
             os.kill(os.getpid(), signal.SIGSEGV)
+            time.sleep(3600)   # (SIGSEGV dumps core there): this thread must not answer meanwhile
         began = time.time()
         time.sleep(DELAY)
         self._send({"id": "c", "object": "chat.completion", "created": 0, "model": "fake",
