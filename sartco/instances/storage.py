@@ -67,7 +67,7 @@ def loaded_dataset(folder: str | Path) -> tuple[dict, dict[str, list[BoardRecord
     took 0.4 s. Every caller gets the same objects: it reads them and never changes them."""
     folder = Path(folder)
     files = sorted(folder.glob("*.json")) if folder.is_dir() else []
-    key = (folder.resolve(), tuple((p.name, p.stat().st_size, p.stat().st_mtime_ns) for p in files))
+    key = (folder.resolve(), tuple((p.name, s.st_size, s.st_mtime_ns) for p in files for s in [p.stat()]))
     if key not in _loaded:
         while len(_loaded) >= 2:  # a file of published episodes reads two datasets in turn
             del _loaded[next(iter(_loaded))]

@@ -175,7 +175,7 @@ def _answer_programs(jobs: list[BuildJob | BuildRecord],
     build and the probes then take their Executions)."""
     for k, job in enumerate(jobs):
         if isinstance(job, BuildJob):
-            yield [program_of(job), *(probe[k][2] if k in probe else [])], job.rows, job.cols
+            yield [program_of(job), *(probe[k].programs if k in probe else [])], job.rows, job.cols
 
 
 def reward_of(key: str, record: BuildRecord, is_probed: bool, probe_result) -> Reward:

@@ -47,6 +47,7 @@ import threading
 from collections import OrderedDict
 from dataclasses import dataclass
 from functools import partial
+from typing import NamedTuple
 
 from sartco import settings
 from sartco.episode import PROBES_KEY
@@ -201,7 +202,11 @@ def run_probes(instance: dict, code: str, seed: int = PROBE_SEED) -> dict:
     return result
 
 
-Probes = tuple[str | None, str | None, list[str]]  # probe_programs': function, whose def, programs
+class Probes(NamedTuple):
+    """probe_programs' answer: the function probed, whose def it is, its probe programs."""
+    function: str | None
+    source: str | None
+    programs: list[str]
 
 
 def probe_programs(instance: dict, code: str, gold: GoldDraws) -> Probes:
@@ -210,10 +215,10 @@ def probe_programs(instance: dict, code: str, gold: GoldDraws) -> Probes:
     given = instance["given_code"]
     found = probed_call(code, given)
     if found is None:
-        return None, None, []
+        return Probes(None, None, [])
     name, source = found
     head = probe_head(code, name, given_code=given, rows=instance["rows"], cols=instance["cols"])
-    return name, source, [head + probe_call(name, a) for a, _ in gold.draws]
+    return Probes(name, source, [head + probe_call(name, a) for a, _ in gold.draws])
 
 
 def run_probes_many(jobs: list[tuple[dict, str, GoldDraws]],
