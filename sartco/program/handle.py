@@ -7,7 +7,7 @@ template that is late, dies, answers garbage, could not start or cannot confine 
 harness's failure (`harness_error`, with the reason), never a program's: no program runs in the
 template. The rest of a batch then goes to a fresh template.
 
-Templates are started from one long-lived thread (`spawn`), so that they die with the parent
+Templates are started from one long-lived thread (spawn.py), so that they die with the parent
 process (child/template.py), isolated as `python -I -S` would be (`-s -S -P`: no user site, no site, no
 script or working folder on sys.path), in `/`, with ENVIRONMENT as their whole environment:
 nothing of the user's (no API key, token or path) is inherited. PYTHONHASHSEED=0 (which -I
@@ -30,7 +30,6 @@ import sys
 import threading
 import time
 from collections import deque
-from concurrent.futures import ThreadPoolExecutor
 from typing import Any
 
 from sartco.settings import IMPORT_ROOT
@@ -39,6 +38,7 @@ from sartco.world import ErrorCode
 from . import compiled
 from .child.confine import Unconfinable, compile_filter
 from .execution import MODULE, Execution, Limits
+from .spawn import spawn
 from .verdict import decide, failed
 
 CHUNK = 64  # items per template round trip
@@ -86,7 +86,7 @@ class TemplateHandle:
             raise _Dead(f"the sandbox cannot confine programs here: {exc}") from None
         argv = [sys.executable, *ISOLATED, "-c", _BOOT, _ROOT, str(os.getpid())] + (["--breach"] if self.breach else []) \
             + ([] if NAMESPACES else ["--no-namespaces"])
-        self.proc = spawn(argv)
+        self.proc = spawn(argv, dict(ENVIRONMENT))  # ENVIRONMENT, and nothing of the parent's
         self.proc.stdin.write(base64.b64encode(bpf) + b"\n")
         self.proc.stdin.flush()
         for pipe in (self.proc.stdin, self.proc.stdout):  # room for items sent ahead and answers that
@@ -271,26 +271,3 @@ def _filter() -> bytes:
     if _bpf is None:
         _bpf = compile_filter()
     return _bpf
-
-
-_spawner: tuple[int, ThreadPoolExecutor] | None = None  # (pid, executor)
-_spawner_lock = threading.Lock()
-
-
-def spawn(argv: list[str]) -> subprocess.Popen:
-    """Start a template from one long-lived thread: its parent-death signal fires when the
-    thread that started it ends (prctl(2)), and the threads that drive templates come and go."""
-    global _spawner
-    with _spawner_lock:
-        if _spawner is None or _spawner[0] != os.getpid():
-            _spawner = (os.getpid(), ThreadPoolExecutor(1, thread_name_prefix="sartco-spawner"))
-        executor = _spawner[1]
-    return executor.submit(
-        subprocess.Popen, argv, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
-        close_fds=True, cwd="/", env=_environment(),
-    ).result()
-
-
-def _environment() -> dict[str, str]:
-    """ENVIRONMENT, and nothing of the parent's."""
-    return dict(ENVIRONMENT)
