@@ -14,7 +14,8 @@ nothing of the user's (no API key, token or path) is inherited. PYTHONHASHSEED=0
 would ignore) makes str hashes, and with them the order of sets and everything built from it,
 the same in every child, run and machine; PYTHONUTF8=1 and LC_CTYPE=C.UTF-8 fix the encoding
 (else Python would pick one from the locale). The template's argv holds the interpreter, the
-import root (sys.path), the parent's pid and the mode; then it enters its namespaces
+import root (sys.path), the parent's pid, the mode and the CPU it is kept on, if any (pool.pinned);
+then it enters its namespaces
 (confine.py; NAMESPACES) and reports them on its ready line (walls.py shows them).
 """
 from __future__ import annotations
@@ -30,6 +31,7 @@ import sys
 import threading
 import time
 from collections import deque
+from functools import partial
 from typing import Any
 
 from sartco.settings import IMPORT_ROOT
@@ -38,6 +40,7 @@ from sartco.world import ErrorCode
 from . import compiled
 from .child.confine import Unconfinable, compile_filter
 from .execution import MODULE, Execution, Limits
+from .feed import More, Stream
 from .spawn import spawn
 from .verdict import decide, failed
 
@@ -55,7 +58,8 @@ NAMESPACES = True  # templates enter their namespaces (the tests turn it off to 
 _BOOT = (
     "import sys; sys.path.insert(0, sys.argv[1]); "
     "from sartco.program.child.template import main; "
-    "sys.exit(main(int(sys.argv[2]), '--breach' in sys.argv[3:], '--no-namespaces' not in sys.argv[3:]))"
+    "sys.exit(main(int(sys.argv[2]), '--breach' in sys.argv[3:], '--no-namespaces' not in sys.argv[3:], "
+    "next((int(a[6:]) for a in sys.argv[3:] if a.startswith('--cpu=')), None)))"
 )
 HOWS = (b"exit", b"signal", b"timeout", b"overflow", b"unconfined")
 SHARED = ("gold", "answer")  # modes whose chunk runs in one child (child/batch.py)
@@ -68,13 +72,13 @@ class _Dead(Exception):
 class TemplateHandle:
     """One template process and the thread-safe state of reading its answers."""
 
-    def __init__(self, breach: bool = False):
+    def __init__(self, breach: bool = False, cpu: int | None = None):
         self.proc: subprocess.Popen | None = None
         self.lines: deque[bytes] = deque()
         self.tail = b""
         self.lock = threading.Lock()
         self.room = 4096  # bytes the template's stdin pipe holds
-        self.breach = breach
+        self.breach, self.cpu = breach, cpu  # cpu: the one CPU its processes run on (None: any)
         self.pid: int | None = None  # the template's pid (pid 1 of its namespace, whose parent is proc)
         self.walls: list[Any] = []  # [name, up, why] of each namespace, as the template reported them
 
@@ -85,7 +89,7 @@ class TemplateHandle:
         except Unconfinable as exc:
             raise _Dead(f"the sandbox cannot confine programs here: {exc}") from None
         argv = [sys.executable, *ISOLATED, "-c", _BOOT, _ROOT, str(os.getpid())] + (["--breach"] if self.breach else []) \
-            + ([] if NAMESPACES else ["--no-namespaces"])
+            + ([] if NAMESPACES else ["--no-namespaces"]) + ([] if self.cpu is None else [f"--cpu={self.cpu}"])
         self.proc = spawn(argv, dict(ENVIRONMENT))  # ENVIRONMENT, and nothing of the parent's
         self.proc.stdin.write(base64.b64encode(bpf) + b"\n")
         self.proc.stdin.flush()
@@ -157,32 +161,40 @@ class TemplateHandle:
             pass  # the template died or was killed: the reader finds out and reports it
 
     def run(self, items: list[bytes], rows: int, cols: int, limits: Limits, semantics: str = MODULE,
-            mode: str = "code", judge: bool = True, starts: frozenset[int] = frozenset()) -> list[Execution]:
-        """One Execution per item (a program as compiled.prepare made it), in order. With `judge`, a
-        template that dies or falls silent while it runs an item is judged (`_judged`). In the modes
-        whose chunk shares a child (SHARED), a chunk starts at each index of `starts` too (one
-        answer's programs), and its first answer may take the whole chunk's wall time, twice."""
+            mode: str = "code", judge: bool = True, starts: frozenset[int] = frozenset(),
+            more: More | None = None) -> list[Execution]:
+        """One Execution per item (a program as compiled.prepare made it), in order, and per item
+        that `more` hands out: it is asked for more (items, and where chunks start among them) each
+        time the template has fewer than AHEAD left, until it hands out none (pool.py's feed).
+        With `judge`, a template that dies or falls silent while it runs an item is judged
+        (`_judged`). In the modes whose chunk shares a child (SHARED), a chunk starts at each index
+        of `starts` too (one answer's programs), and its first answer may take the whole chunk's
+        wall time, twice."""
+        stream = Stream(list(items), set(starts), more, _longest)
         results: list[Execution] = []
-        while len(results) < len(items):
+        while len(results) < len(stream.items) or not stream.ended:
             suspect, late = None, False
-            todo = items[len(results):]
-            rest = frozenset(k - len(results) for k in starts if k > len(results))
-            patience = limits.wall_time * (2 * max(map(len, _chunks(todo, rest))) if mode in SHARED else 1) + SLACK
             try:
                 if self.proc is None:
                     self.start()
             except (_Dead, OSError, ValueError) as exc:
                 self.kill()
-                results.extend(failed(ErrorCode.HARNESS_ERROR, f"sandbox unavailable: {exc}") for _ in todo)
+                stream.drain()
+                results.extend(failed(ErrorCode.HARNESS_ERROR, f"sandbox unavailable: {exc}")
+                               for _ in stream.items[len(results):])
                 break
-            send = (self.proc.stdin, todo, rows, cols, limits, semantics, mode, rest)
+            stream.dead = False
+            send = partial(self._send, self.proc.stdin, rows=rows, cols=cols, limits=limits, semantics=semantics,
+                           mode=mode)
+            todo, rest = stream.items[len(results):], frozenset(k - len(results) for k in stream.starts if k >= len(results))
             writer = None
-            if len(todo) <= CHUNK and sum(map(len, todo)) + 4096 < self.room:
-                self._send(*send)  # one chunk that fits in the empty pipe: the write cannot block
+            if stream.ended and len(todo) <= CHUNK and sum(map(len, todo)) + 4096 < self.room:
+                send(todo, starts=rest)  # one chunk that fits in the empty pipe: the write cannot block
             else:
-                writer = threading.Thread(target=self._send, args=send, daemon=True)
+                writer = threading.Thread(target=stream.write, args=(send, todo, rest), daemon=True)
                 writer.start()
-            for _ in todo:
+            while stream.next(len(results)):
+                patience = limits.wall_time * (2 * stream.longest if mode in SHARED else 1) + SLACK
                 try:
                     line = self._readline(time.monotonic() + patience)
                     fault, late = (None, False) if line is not None else ("the sandbox worker did not answer in time", True)
@@ -198,11 +210,15 @@ class TemplateHandle:
                     results.append(failed(ErrorCode.HARNESS_ERROR, fault))
                     suspect = len(results) - 1
                 self.kill()  # the template failed: the rest goes to a fresh one
+                stream.stop()
                 break
             if writer is not None:
                 writer.join()  # done, or unblocked by the kill (a closed pipe)
+            if stream.error is not None:
+                raise stream.error
             if suspect is not None and judge:
-                results[suspect] = self._judged(items[suspect], results[suspect], late, rows, cols, limits, semantics, mode)
+                results[suspect] = self._judged(stream.items[suspect], results[suspect], late, rows, cols, limits,
+                                                semantics, mode)
         return results
 
     def _judged(self, item: bytes, fault: Execution, late: bool, rows: int, cols: int, limits: Limits, semantics: str,
@@ -235,6 +251,11 @@ def _chunks(items: list[bytes], starts: frozenset[int]) -> list[list[bytes]]:
             chunks.append([])
         chunks[-1].append(item)
     return chunks
+
+
+def _longest(items: list[bytes], starts: frozenset[int]) -> int:
+    """The most items of one chunk (_chunks)."""
+    return max(map(len, _chunks(items, starts)), default=1)
 
 
 def _answer(line: bytes, limits: Limits) -> Execution | None:

@@ -2,15 +2,13 @@
 program (child/template.py), batches split over them; and the module-level execute() / execute_many()
 of the sandbox in use (sandbox.py).
 
-`execute_many` compiles a big call in parts (`parts`: FIRST programs, then twice as many each
-time), each handed to `dispatch` by a daemon thread once it is compiled and the part before it has
-run (`_Fed`): the templates run one part while the parent compiles the next.
-
-`LocalSandbox.dispatch` sends programs in chunks (a header line + one line per program) to up to
-`workers` templates (default: min(2, CPUs)), each driven by one thread that reads the answers while
-a second one writes the chunks (so a template finds its next chunk waiting). The shares are
-balanced by size, since a program's cost grows with its text (parsing and compiling are much of
-it). With `cache` (the default) equal sources run once and share their Execution, within a call
+`execute_many` compiles a big call in parts (feed.py: FIRST programs, then twice as many each
+time) and puts each in the call's `Feed` once it is compiled; `dispatch` (on a daemon thread while
+the parent compiles) runs the feed on up to `workers` templates (default: min(2, CPUs)), each
+driven by one thread that reads the answers while a second one writes the chunks (a header line
++ one line per program) and takes the next programs from the feed whenever the template runs low
+(handle.py): a template finds its next chunk waiting, and no template waits for another.
+With `cache` (the default) equal sources run once and share their Execution, within a call
 and across calls (a memo of the last MEMO verdicts per sandbox, keyed by the source, the board's
 size, the limits, the semantics and the mode): the same program gives the same board everywhere.
 The probes run the gold function at the same arguments for every answer to a board, and a gold
@@ -30,12 +28,12 @@ import marshal
 import os
 import threading
 from collections import OrderedDict
-from collections.abc import Callable
 from functools import partial
 
 from sartco.world import DEFAULT_COLS, DEFAULT_ROWS, Board, ErrorCode, WorldError
 
 from . import compiled
+from .feed import Background, Feed, parts
 from .handle import TemplateHandle
 from .execution import MODULE, SEMANTICS, Execution, Limits, not_a_str
 from .verdict import failed
@@ -43,7 +41,6 @@ from .verdict import failed
 BATCH = 32  # a call with fewer items than this uses one template
 GOLD = "gold"  # execute_many's mode for the harness's own reference programs (child/template.py)
 ANSWER = "answer"  # execute_many's mode for the programs of model answers, each answer's in one child (groups)
-FIRST = 64  # programs of a big call compiled before the templates start on them (parts)
 MEMO = 50_000  # verdicts a LocalSandbox keeps for repeated programs (a few KB each)
 TRANSIENT = frozenset({ErrorCode.TIMEOUT, ErrorCode.RESOURCE_LIMIT, ErrorCode.HARNESS_ERROR})
 MemoKey = tuple[str, int, int, Limits, str, str]  # source, rows, cols, limits, semantics, mode
@@ -51,6 +48,15 @@ MemoKey = tuple[str, int, int, Limits, str, str]  # source, rows, cols, limits, 
 
 def default_workers() -> int:
     return max(1, min(2, os.cpu_count() or 1))
+
+
+def pinned(k: int, workers: int) -> int | None:
+    """The CPU the k-th template of a sandbox of `workers` runs on, with its zygote and children,
+    when they are as many as this process's CPUs: a template's chain (it, its zygote, the child)
+    runs one process at a time, and left to the scheduler two chains share a core at times while
+    the other idles (docs/sandbox.md). Else None: any CPU."""
+    cpus = sorted(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else []
+    return cpus[k % workers] if len(cpus) == workers else None
 
 
 class LocalSandbox:
@@ -93,7 +99,8 @@ class LocalSandbox:
             if self._pid != os.getpid():  # a forked child must not share its parent's templates
                 self._templates, self._pid = [], os.getpid()
             while len(self._templates) < max(n, self.workers or default_workers()):
-                self._templates.append(TemplateHandle(self.breach))
+                self._templates.append(TemplateHandle(self.breach, pinned(len(self._templates),
+                                                                          self.workers or default_workers())))
             return sorted(self._templates, key=lambda t: t.lock.locked())[:n]
 
     def pids(self) -> list[int]:
@@ -112,37 +119,31 @@ class LocalSandbox:
                     with template.lock:
                         template.kill()
 
-    def dispatch(self, items: list[bytes], rows: int, cols: int, limits: Limits, workers: int | None = None,
-                 semantics: str = MODULE, mode: str = "code", groups: list[object] | None = None) -> list[Execution]:
-        """Run items (compiled.prepare's) on the templates; Executions in input order. `groups`
-        (mode ANSWER): one label per item; consecutive items of one label go to one template, in
-        one chunk of their own."""
-        results: list = [None] * len(items)
-        n = max(1, min(workers or self.workers or default_workers(), -(-len(items) // BATCH)))
-        shares: list[list[int]] = [[] for _ in range(n)]
-        starts: list[set[int]] = [set() for _ in range(n)]
-        load = [0] * n
-        w = 0
-        for i, item in enumerate(items):
-            if groups is None or i == 0 or groups[i] != groups[i - 1]:
-                w = load.index(min(load))
-                starts[w].add(len(shares[w]))
-            shares[w].append(i)
-            load[w] += len(item)
+    def dispatch(self, feed: Feed, items: dict[int, bytes], rows: int, cols: int, limits: Limits,
+                 semantics: str = MODULE, mode: str = "code") -> dict[int, Execution]:
+        """Run the programs of `feed` (items: compiled.prepare's, by index) on feed.takers
+        templates, each taking its next ones from the feed as it runs low; Executions by index."""
+        results: dict[int, Execution] = {}
 
-        def drive(template: TemplateHandle, share: list[int], start: set[int]):
+        def drive(template: TemplateHandle):
             with template.lock:
-                answers = template.run([items[i] for i in share], rows, cols, limits, semantics, mode,
-                                       starts=frozenset(start) if groups is not None else frozenset())
-                for i, answer in zip(share, answers):
-                    results[i] = answer
+                taken: list[int] = []
 
-        templates = self.templates(n)
-        if n == 1:
-            drive(templates[0], shares[0], starts[0])
+                def more() -> tuple[list[bytes], frozenset[int]]:
+                    batch = feed.take()
+                    taken.extend(batch)
+                    return [items[i] for i in batch], feed.starts(batch)
+
+                first, starts = more()
+                if first:
+                    answers = template.run(first, rows, cols, limits, semantics, mode, starts=starts, more=more)
+                    results.update(zip(taken, answers))
+
+        templates = self.templates(feed.takers)
+        if len(templates) == 1:
+            drive(templates[0])
         else:
-            threads = [threading.Thread(target=drive, args=(t, sh, st), daemon=True)
-                       for t, sh, st in zip(templates, shares, starts)]
+            threads = [threading.Thread(target=drive, args=(t,), daemon=True) for t in templates]
             for t in threads:
                 t.start()
             for t in threads:
@@ -185,29 +186,29 @@ class LocalSandbox:
                 else:
                     first.setdefault(p, i)
                     todo.append(i)
-            # compiled here (compiled.py), a part at a time: the templates run a part while the next
-            # one compiles; a program that never runs has its Execution already
+            # compiled here (compiled.py), a part at a time, each fed to the templates once it is
+            # (feed.py); a program that never runs has its Execution already
             labels = answers if mode == ANSWER else None
             cuts = parts(todo, labels)
             made: dict[int, bytes | Execution] = {}
-            running: list[tuple[list[int], _Fed]] = []
-            stop = threading.Event()  # set when the call ends: a part not sent by then is not sent
+            feed = Feed(len(todo), max(1, min(workers or self.workers or default_workers(), -(-len(todo) // BATCH))),
+                        labels)
+            job = partial(dispatch, self, feed, made, rows, cols, limits, semantics, mode)
+            running: Background | None = None
             try:
                 for part in cuts:
                     made.update(zip(part, [json.dumps(programs[i]).encode() for i in part] if mode == "breach" else
                                     compiled.prepare_all([programs[i] for i in part], limits)))
-                    run = [i for i in part if type(made[i]) is bytes]
-                    if run:
-                        job = partial(dispatch, self, [made[i] for i in run], rows, cols, limits, workers, semantics,
-                                      mode, None if labels is None else [labels[i] for i in run])
-                        if len(cuts) == 1:  # in the caller's thread, as a call was before the parts
-                            made.update(zip(run, job()))
-                        else:
-                            running.append((run, _Fed(job, running[-1][1] if running else None, stop)))
-                for run, fed in running:
-                    made.update(zip(run, fed.result()))
-            finally:  # (early: Ctrl-C, or a part that failed; what follows would be thrown away)
-                stop.set()
+                    feed.put([i for i in part if type(made[i]) is bytes], len(part))
+                    if running is None and len(cuts) > 1:
+                        running = Background(job)
+                feed.close()
+                if running is not None:
+                    made.update(running.result())
+                elif any(type(made[i]) is bytes for i in todo):  # one part: in the caller's thread
+                    made.update(job())
+            finally:  # (early: Ctrl-C, or a failure; what follows would be thrown away)
+                feed.stop()
             for i in todo:
                 results[i] = answer = made[i]
                 if cache and type(answer) is Execution:
@@ -226,55 +227,9 @@ class LocalSandbox:
         return self.execute_many([code], rows, cols, limits, workers=1, semantics=semantics)[0]
 
 
-def parts(todo: list[int], labels: list[object] | None = None) -> list[list[int]]:
-    """The programs of a call (`todo`, their indices), in the order given, in parts of FIRST,
-    2 x FIRST, 4 x FIRST, ... programs: the templates start on the first part while the parent
-    compiles the next, and the parts soon outgrow their compiles (a compile is a fraction of a
-    run). A part never ends inside one answer's programs (`labels`, mode ANSWER: one child each)."""
-    cuts: list[list[int]] = []
-    start, size = 0, FIRST
-    while start < len(todo):
-        end = min(start + size, len(todo))
-        while labels is not None and end < len(todo) and labels[todo[end]] == labels[todo[end - 1]]:
-            end += 1
-        cuts.append(todo[start:end])
-        start, size = end, 2 * size
-    return cuts
-
-
-class _Fed:
-    """The dispatch of one part (`job`) on a daemon thread of its own, after the part before it:
-    as dispatch's own threads are daemons, a caller interrupted meanwhile (Ctrl-C) and a process
-    that ends do not wait for it. Not sent once the call has ended or a part failed (`stop`)."""
-
-    def __init__(self, job: Callable[[], list[Execution]], before: _Fed | None, stop: threading.Event):
-        self._job, self._before, self._stop = job, before, stop
-        self._out: list[Execution] | BaseException = []
-        self._thread = threading.Thread(target=self._run, daemon=True, name="sartco-feeder")
-        self._thread.start()
-
-    def _run(self) -> None:
-        if self._before is not None:
-            self._before._thread.join()
-        if self._stop.is_set():  # the call has ended, or a part before this one failed: no one reads this one
-            return
-        try:
-            self._out = self._job()
-        except BaseException as exc:  # raised by result(), in the caller's thread
-            self._out = exc
-            self._stop.set()
-
-    def result(self) -> list[Execution]:
-        self._thread.join()
-        if isinstance(self._out, BaseException):
-            raise self._out
-        return self._out
-
-
-def dispatch(sandbox: LocalSandbox, items, rows, cols, limits, workers=None, semantics=MODULE, mode="code",
-             groups=None) -> list:
+def dispatch(sandbox: LocalSandbox, feed: Feed, items, rows, cols, limits, semantics=MODULE, mode="code") -> dict:
     """The one way execute_many reaches the templates (tests put a failing one here)."""
-    return sandbox.dispatch(items, rows, cols, limits, workers, semantics, mode, groups)
+    return sandbox.dispatch(feed, items, rows, cols, limits, semantics, mode)
 
 
 _local: LocalSandbox | None = None

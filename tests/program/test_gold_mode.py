@@ -98,7 +98,7 @@ def test_a_gold_verdict_is_kept_for_the_same_program_in_mode_code(box):
     sent = []
     real = pool.dispatch
     try:
-        pool.dispatch = lambda sandbox, items, *args: sent.append(len(items)) or real(sandbox, items, *args)
+        pool.dispatch = lambda *args: sent.append(args) or real(*args)
         assert box.execute_many([_benign(1)]) == [first]
     finally:
         pool.dispatch = real

@@ -49,7 +49,7 @@ def test_a_worker_that_exits_on_its_own_is_not_the_program(monkeypatch, fresh_po
 
 
 def test_lost_and_failed_batches(monkeypatch):
-    monkeypatch.setattr(pool, "dispatch", lambda *a, **k: [None])
+    monkeypatch.setattr(pool, "dispatch", lambda *a, **k: {})  # no Execution for the program
     ex = execute(PUT)
     assert (ex.error, ex.message) == (E.HARNESS_ERROR, "the sandbox returned no result")
 

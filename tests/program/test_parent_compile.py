@@ -18,8 +18,7 @@ def _sum(terms: int) -> str:
 def test_a_refused_program_runs_no_child(monkeypatch):
     sent: list[int] = []
     real = pool.dispatch
-    monkeypatch.setattr(pool, "dispatch",
-                        lambda sandbox, items, *args: sent.append(len(items)) or real(sandbox, items, *args))
+    monkeypatch.setattr(pool, "dispatch", lambda *args: (ran := real(*args), sent.append(len(ran)))[0])
     box = pool.LocalSandbox(workers=1)
     try:
         results = box.execute_many(["import os", "x = (", "y" * 200, "put(board, 'nut', 'red', 1, 1)"],

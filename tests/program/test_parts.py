@@ -1,12 +1,12 @@
-"""A big call in parts (pool.parts, issue 46): the templates run one part while the parent compiles
-the next. The verdicts, their order, the memo and the answers' children are those of one part.
+"""A big call in parts, fed to the templates as it is compiled (feed.py, issue 46): the templates
+run one part while the parent compiles the next, each takes its next programs when it runs low,
+and the verdicts, their order, the memo and the answers' children are those of one part.
 """
 import threading
 
 import pytest
 
-from sartco.program import pool
-from sartco.program.verdict import failed
+from sartco.program import feed, pool
 from sartco.world import ErrorCode
 
 from test_gold_mode import DETERMINED, _benign
@@ -16,35 +16,67 @@ E = ErrorCode
 
 def test_parts_double_and_keep_the_order():
     todo = list(range(3, 3000))
-    cuts = pool.parts(todo)
-    sizes = [pool.FIRST * 2 ** k for k in range(len(cuts))]
+    cuts = feed.parts(todo)
+    sizes = [feed.FIRST * 2 ** k for k in range(len(cuts))]
     assert [len(part) for part in cuts[:-1]] == sizes[:-1] and 0 < len(cuts[-1]) <= sizes[-1]
     assert sum(cuts, []) == todo
-    assert pool.parts(todo[:pool.FIRST]) == [todo[:pool.FIRST]] and pool.parts([]) == []
+    assert feed.parts(todo[:feed.FIRST]) == [todo[:feed.FIRST]] and feed.parts([]) == []
 
 
 def test_a_part_never_ends_inside_an_answer():
     todo = list(range(1500))
     labels = [i // 9 for i in range(1500)]  # answers of 9 programs: FIRST is no multiple of 9
-    cuts = pool.parts(todo, labels)
+    cuts = feed.parts(todo, labels)
     assert sum(cuts, []) == todo and len(cuts) > 2
     for k, (before, after) in enumerate(zip(cuts, cuts[1:])):
-        assert labels[before[-1]] != labels[after[0]] and len(before) >= pool.FIRST * 2 ** k
+        assert labels[before[-1]] != labels[after[0]] and len(before) >= feed.FIRST * 2 ** k
+
+
+def test_takes_share_what_is_left_and_never_split_an_answer():
+    labels = [i // 3 for i in range(300)]  # answers of 3 programs
+    fed = feed.Feed(300, 2, labels)
+    fed.put(list(range(60)), 60)  # the first part: compiled, the rest not yet
+    first = fed.take()
+    assert len(first) == 30  # half of what is ready: the other template gets the other half
+    fed.put(list(range(60, 300)), 240)
+    fed.close()
+    takes = [first]
+    while batch := fed.take():
+        takes.append(batch)
+    assert sum(takes, []) == list(range(300))
+    assert all(len(t) % 3 == 0 for t in takes)  # whole answers only
+    assert len(takes[1]) > len(takes[-2]) >= feed.GRAIN  # shares shrink as the call ends
+    assert fed.starts(takes[1]) == frozenset(range(0, len(takes[1]), 3))
+
+
+def test_a_stopped_feed_hands_out_nothing_more():
+    fed = feed.Feed(20, 1)
+    fed.put(list(range(10)), 10)
+    waiting = []
+    taker = threading.Thread(target=lambda: waiting.append((fed.take(), fed.take())))
+    taker.start()  # takes the ten, then waits for the next part
+    taker.join(0.2)
+    assert taker.is_alive()
+    fed.stop()
+    taker.join(5)
+    assert waiting == [(list(range(10)), [])]
 
 
 @pytest.fixture
 def spied(monkeypatch):
-    """Parts of 8 programs; the answers (labels) of the programs each dispatch sent."""
-    monkeypatch.setattr(pool, "FIRST", 8)
-    calls: list[list[object]] = []
-    real = pool.dispatch
+    """Parts of 8 programs; the answers (labels) of the programs each take handed out."""
+    monkeypatch.setattr(feed, "FIRST", 8)
+    takes: list[list[object]] = []
+    real = feed.Feed.take
 
-    def dispatch(sandbox, items, rows, cols, limits, workers, semantics, mode, groups):
-        calls.append(list(groups or [None] * len(items)))
-        return real(sandbox, items, rows, cols, limits, workers, semantics, mode, groups)
+    def take(self):
+        batch = real(self)
+        if batch:
+            takes.append([self.labels[i] if self.labels else None for i in batch])
+        return batch
 
-    monkeypatch.setattr(pool, "dispatch", dispatch)
-    return calls
+    monkeypatch.setattr(feed.Feed, "take", take)
+    return takes
 
 
 def _mixed() -> tuple[list[str], list[int]]:
@@ -66,12 +98,11 @@ def test_a_call_in_parts_gives_the_verdicts_of_one_call(spied, monkeypatch):
     whole_box, parts_box = pool.LocalSandbox(workers=2), pool.LocalSandbox(workers=2)
     try:
         parted = parts_box.execute_many(programs, answers=labels)
-        sent = list(spied)
-        assert len(sent) >= 3, sent  # really in parts
-        monkeypatch.setattr(pool, "FIRST", 10 ** 9)
+        taken = list(spied)
+        assert len(taken) >= 3, taken  # really in several takes
+        monkeypatch.setattr(feed, "FIRST", 10 ** 9)
         spied.clear()
         whole = whole_box.execute_many(programs, answers=labels)
-        assert len(spied) == 1
     finally:
         whole_box.close()
         parts_box.close()
@@ -81,10 +112,10 @@ def test_a_call_in_parts_gives_the_verdicts_of_one_call(spied, monkeypatch):
     assert [ex.cells for ex in whole[12:17]] == [{f"{k}:{k}": [["nut", "red"]]} for k in range(5)]
     assert [ex.error for ex in whole[17:20]] == [E.FORBIDDEN, E.SYNTAX_ERROR, None]
     # the same programs ran (a repeat once: _benign(1) and _benign(2) twice), and no answer's
-    # programs were split between parts (each part's answers go one child each: pool.dispatch)
-    assert sorted(sum(sent, [])) == sorted(spied[0])
-    for k, part in enumerate(sent):
-        assert not set(part) & set(sum(sent[k + 1:], []))
+    # programs were split between takes (each take's answers go one child each)
+    assert sorted(sum(taken, [])) == sorted(sum(spied, []))
+    for k, batch in enumerate(taken):
+        assert not set(batch) & set(sum(taken[k + 1:], []))
 
 
 def _feeders_ended() -> None:
@@ -93,48 +124,42 @@ def _feeders_ended() -> None:
             thread.join(10)
 
 
-def test_a_part_whose_templates_fail_makes_every_verdict_a_harness_error(spied, monkeypatch):
-    """Nothing raises out of execute_many, whichever part's dispatch fails; the parts after it
-    are not sent (their verdicts would be thrown away)."""
-    calls = spied
-    real = pool.dispatch
-    raised = []
+def test_a_dispatch_that_fails_makes_every_verdict_a_harness_error(spied, monkeypatch):
+    """Nothing raises out of execute_many when its templates fail while the parent compiles; no
+    template takes anything after (its verdict would be thrown away)."""
+    def fails(sandbox, fed, *args):
+        fed.take()
+        raise OSError("the templates are gone")
 
-    def second_fails(sandbox, items, *args):
-        if len(calls) == 1:
-            raised.append(len(items))
-            raise OSError("the templates are gone")
-        return real(sandbox, items, *args)
-
-    monkeypatch.setattr(pool, "dispatch", second_fails)
+    monkeypatch.setattr(pool, "dispatch", fails)
     box = pool.LocalSandbox(workers=1)
     try:
         results = box.execute_many([_benign(k) + f"\nz = {k}" for k in range(30)], cache=False)
     finally:
         box.close()
     _feeders_ended()
-    assert len(calls) == 1 and raised == [16]  # the first part ran, the second failed, the third was not sent
+    assert [len(t) for t in spied] == [8]  # the first part was taken, nothing after the failure
     assert {(ex.error, ex.message) for ex in results} == {
         (E.HARNESS_ERROR, "sandbox failure: OSError: the templates are gone")}
 
 
 @pytest.mark.parametrize("where", ["compiling", "waiting"])
-def test_an_interrupted_call_does_not_wait_for_the_part_it_sent_and_sends_no_other(spied, monkeypatch, where):
-    """Ctrl-C while the parent compiles a later part, or while it waits for a part's verdicts: the
-    call ends at once, the part already sent goes on in a daemon thread (a process that ends does
-    not wait for it), and no later part is sent (a trainer interrupted in a notebook leaves no
+def test_an_interrupted_call_does_not_wait_for_its_templates_and_feeds_them_no_more(spied, monkeypatch, where):
+    """Ctrl-C while the parent compiles a later part, or while it waits for the verdicts: the call
+    ends at once, the programs already taken go on in a daemon thread (a process that ends does
+    not wait for it), and no template takes more (a trainer interrupted in a notebook leaves no
     call running on)."""
     running, finished, release = threading.Event(), threading.Event(), threading.Event()
-    compiles, sent = [], []
+    compiles, taken = [], []
     prepare_all = pool.compiled.prepare_all
 
-    def blocked(sandbox, items, *args):
-        sent.append(len(items))
-        if len(sent) == 1:
-            running.set()
-            release.wait(5)
-            finished.set()
-        return [failed(E.HARNESS_ERROR, "not run") for _ in items]
+    def blocked(sandbox, fed, *args):
+        taken.append(len(fed.take()))
+        running.set()
+        release.wait(5)
+        taken.append(len(fed.take()))
+        finished.set()
+        return {}
 
     def interrupted(*args):
         running.wait(5)
@@ -148,7 +173,7 @@ def test_an_interrupted_call_does_not_wait_for_the_part_it_sent_and_sends_no_oth
     if where == "compiling":
         monkeypatch.setattr(pool.compiled, "prepare_all", compiled)
     else:
-        monkeypatch.setattr(pool._Fed, "result", interrupted)
+        monkeypatch.setattr(feed.Background, "result", interrupted)
     box = pool.LocalSandbox(workers=1)
     try:
         with pytest.raises(KeyboardInterrupt):
@@ -157,7 +182,7 @@ def test_an_interrupted_call_does_not_wait_for_the_part_it_sent_and_sends_no_oth
         assert all(t.daemon for t in threading.enumerate() if t.name == "sartco-feeder")
         release.set()
         _feeders_ended()
-        assert sent == [8]  # parts of 8, 16 and 6 programs: only the first was sent
+        assert taken == [8, 0]  # parts of 8, 16 and 6 programs: only the first was taken
     finally:
         release.set()
         box.close()

@@ -5,6 +5,8 @@ before it answered the first program of a chunk may have been compiling any of t
 parent runs the rest again, each compiled at its own turn. These tests pin down that every
 program still gets its own exact result, in input order.
 """
+import os
+
 import pytest
 
 from sartco.program import Limits, execute_many, handle, pool
@@ -78,9 +80,10 @@ def counted(monkeypatch):
     sent: list[int] = []
     real = pool.dispatch
 
-    def counting(sandbox, items, *args):
-        sent.append(len(items))
-        return real(sandbox, items, *args)
+    def counting(*args):
+        ran = real(*args)  # an Execution for each program the templates ran
+        sent.append(len(ran))
+        return ran
 
     monkeypatch.setattr(pool, "dispatch", counting)
     yield box, sent
@@ -112,3 +115,42 @@ def test_verdicts_that_depend_on_the_machine_are_not_kept(counted):
         [ex] = box.execute_many([RUNAWAY], limits=limits)
         assert ex.error in (ErrorCode.TIMEOUT, ErrorCode.RESOURCE_LIMIT)
     assert sent == [1, 1]
+
+
+def _tree(root: int) -> list[int]:
+    """root and every process under it."""
+    children: dict[int, list[int]] = {}
+    for entry in os.listdir("/proc"):
+        try:
+            with open(f"/proc/{entry}/stat") as f:
+                children.setdefault(int(f.read().rsplit(")", 1)[1].split()[1]), []).append(int(entry))
+        except (OSError, ValueError):
+            pass
+    found, todo = [], [root]
+    while todo:
+        found.append(todo.pop())
+        todo += children.get(found[-1], [])
+    return found
+
+
+def _cpus_of(pid: int) -> str:
+    with open(f"/proc/{pid}/status") as f:
+        return next(line.split()[1] for line in f if line.startswith("Cpus_allowed_list:"))
+
+
+@pytest.mark.skipif(not 2 <= len(os.sched_getaffinity(0)) <= 4, reason="needs 2 to 4 CPUs")
+def test_templates_as_many_as_the_cpus_each_run_on_a_cpu_of_their_own():
+    """pool.pinned: a template, its zygote and so every child of theirs run on one CPU, another for
+    each template, when the templates are as many as this process's CPUs; else on any CPU."""
+    cpus = sorted(os.sched_getaffinity(0))
+    assert pool.pinned(0, len(cpus) + 1) is None and pool.pinned(0, len(cpus) - 1) is None
+    box = pool.LocalSandbox(workers=len(cpus))
+    try:
+        results = box.execute_many([_benign(i) for i in range(64 * len(cpus))], cache=False)
+        assert all(ex.ok for ex in results)
+        held = [{_cpus_of(pid) for pid in _tree(t.proc.pid)} for t in box._templates]
+        trees = [len(_tree(t.proc.pid)) for t in box._templates]
+    finally:
+        box.close()
+    assert held == [{str(cpu)} for cpu in cpus]
+    assert min(trees) >= 3  # the process started, the template (pid 1 of its namespace) and its zygote

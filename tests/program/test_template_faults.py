@@ -8,7 +8,7 @@ import pytest
 from harness_helpers import answering_worker
 
 from sartco.program import LocalSandbox, Limits
-from sartco.program import handle
+from sartco.program import feed, handle
 from sartco.program.child import confine
 from sartco.world import ErrorCode
 
@@ -36,6 +36,20 @@ def test_a_program_that_brings_its_template_down_fails_itself(monkeypatch):
     assert before.ok and after.ok, (before, after)
     assert (down.ok, down.error) == (False, E.RUNTIME_ERROR), down
     assert down.message == "the program brought down the sandbox template that ran it, twice (an empty program did not)"
+
+
+@pytest.mark.parametrize("workers", [1, 2])
+def test_a_template_brought_down_in_the_middle_of_a_fed_call_takes_the_rest_on_a_fresh_one(monkeypatch, workers):
+    """A call in parts (pool.py's feed): the template dies while programs taken from the feed are
+    still queued behind the culprit; they run on its fresh successor, and more are taken after."""
+    monkeypatch.setattr(feed, "FIRST", 8)
+    sandbox = _fake(monkeypatch, "if 'BRING DOWN' in source: sys.exit(1)")
+    sandbox.workers = workers
+    programs = [f"x = {k}" for k in range(100)]
+    programs[37] = "x = 'BRING DOWN'"
+    results = _run(sandbox, programs)
+    assert [k for k, ex in enumerate(results) if not ex.ok] == [37]
+    assert results[37].error == E.RUNTIME_ERROR, results[37]
 
 
 def test_a_program_whose_template_falls_silent_is_its_timeout(monkeypatch):

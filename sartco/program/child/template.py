@@ -264,11 +264,18 @@ class Template:
                 out.flush()
 
 
-def main(parent: int = 0, breach: bool = False, namespaces: bool = True) -> int:
+def main(parent: int = 0, breach: bool = False, namespaces: bool = True, cpu: int | None = None) -> int:
     """The template's life: its namespaces (isolation.py), the seccomp filter (stdin's first line,
-    BPF in base64), chunks of programs (the module docstring); "ready" names the namespaces up."""
+    BPF in base64), chunks of programs (the module docstring); "ready" names the namespaces up.
+    `cpu`: the one CPU it, its zygote and their children run on (pool.pinned; where the kernel
+    refuses it, any)."""
     from . import confine, isolation
 
+    if cpu is not None:
+        try:
+            os.sched_setaffinity(0, {cpu})
+        except OSError:  # a CPU this process may not use now: only slower
+            pass
     isolation.fixed_layout()
     isolation.die_with_parent(parent)
     refused = isolation.enter_namespaces() if namespaces else "not asked for (a template without namespaces)"
