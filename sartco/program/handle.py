@@ -14,8 +14,7 @@ nothing of the user's (no API key, token or path) is inherited. PYTHONHASHSEED=0
 would ignore) makes str hashes, and with them the order of sets and everything built from it,
 the same in every child, run and machine; PYTHONUTF8=1 and LC_CTYPE=C.UTF-8 fix the encoding
 (else Python would pick one from the locale). The template's argv holds the interpreter, the
-import root (sys.path), the parent's pid, the mode and the CPU it is kept on, if any (pool.pinned);
-then it enters its namespaces
+import root (sys.path), the parent's pid and the mode; then it enters its namespaces
 (confine.py; NAMESPACES) and reports them on its ready line (walls.py shows them).
 """
 from __future__ import annotations
@@ -58,8 +57,7 @@ NAMESPACES = True  # templates enter their namespaces (the tests turn it off to 
 _BOOT = (
     "import sys; sys.path.insert(0, sys.argv[1]); "
     "from sartco.program.child.template import main; "
-    "sys.exit(main(int(sys.argv[2]), '--breach' in sys.argv[3:], '--no-namespaces' not in sys.argv[3:], "
-    "next((int(a[6:]) for a in sys.argv[3:] if a.startswith('--cpu=')), None)))"
+    "sys.exit(main(int(sys.argv[2]), '--breach' in sys.argv[3:], '--no-namespaces' not in sys.argv[3:]))"
 )
 HOWS = (b"exit", b"signal", b"timeout", b"overflow", b"unconfined")
 SHARED = ("gold", "answer")  # modes whose chunk runs in one child (child/batch.py)
@@ -72,13 +70,14 @@ class _Dead(Exception):
 class TemplateHandle:
     """One template process and the thread-safe state of reading its answers."""
 
-    def __init__(self, breach: bool = False, cpu: int | None = None):
+    def __init__(self, breach: bool = False):
         self.proc: subprocess.Popen | None = None
         self.lines: deque[bytes] = deque()
         self.tail = b""
         self.lock = threading.Lock()
         self.room = 4096  # bytes the template's stdin pipe holds
-        self.breach, self.cpu = breach, cpu  # cpu: the one CPU its processes run on (None: any)
+        self.breach = breach
+        self.cpu: int | None = None  # the one CPU its processes run on from its next chunk (None: any; pool.pinned)
         self.pid: int | None = None  # the template's pid (pid 1 of its namespace, whose parent is proc)
         self.walls: list[Any] = []  # [name, up, why] of each namespace, as the template reported them
 
@@ -89,7 +88,7 @@ class TemplateHandle:
         except Unconfinable as exc:
             raise _Dead(f"the sandbox cannot confine programs here: {exc}") from None
         argv = [sys.executable, *ISOLATED, "-c", _BOOT, _ROOT, str(os.getpid())] + (["--breach"] if self.breach else []) \
-            + ([] if NAMESPACES else ["--no-namespaces"]) + ([] if self.cpu is None else [f"--cpu={self.cpu}"])
+            + ([] if NAMESPACES else ["--no-namespaces"])
         self.proc = spawn(argv, dict(ENVIRONMENT))  # ENVIRONMENT, and nothing of the parent's
         self.proc.stdin.write(base64.b64encode(bpf) + b"\n")
         self.proc.stdin.flush()
@@ -154,7 +153,7 @@ class TemplateHandle:
         try:
             for chunk in _chunks(items, starts):
                 header = json.dumps({"limits": limits.as_list(), "rows": rows, "cols": cols, "semantics": semantics,
-                                     "items": len(chunk), "mode": mode}).encode()
+                                     "items": len(chunk), "mode": mode, "cpu": self.cpu}).encode()
                 stdin.write(b"\n".join([header, *chunk]) + b"\n")
                 stdin.flush()
         except (OSError, ValueError):

@@ -50,13 +50,14 @@ def default_workers() -> int:
     return max(1, min(2, os.cpu_count() or 1))
 
 
-def pinned(k: int, workers: int) -> int | None:
-    """The CPU the k-th template of a sandbox of `workers` runs on, with its zygote and children,
-    when they are as many as this process's CPUs: a template's chain (it, its zygote, the child)
-    runs one process at a time, and left to the scheduler two chains share a core at times while
-    the other idles (docs/sandbox.md). Else None: any CPU."""
+def pinned(n: int) -> list[int | None]:
+    """The CPU of each of a call's n templates: one of its own (and of its zygote and children)
+    when they are as many as this process's CPUs, else any (None). A template's chain (it, its
+    zygote, the child) runs one process at a time, and left to the scheduler two chains shared a
+    core at times while the other idled (docs/sandbox.md); a call on fewer templates, or
+    templates of other processes beside them, are left to the scheduler."""
     cpus = sorted(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else []
-    return cpus[k % workers] if len(cpus) == workers else None
+    return list(cpus) if len(cpus) == n else [None] * n
 
 
 class LocalSandbox:
@@ -99,8 +100,7 @@ class LocalSandbox:
             if self._pid != os.getpid():  # a forked child must not share its parent's templates
                 self._templates, self._pid = [], os.getpid()
             while len(self._templates) < max(n, self.workers or default_workers()):
-                self._templates.append(TemplateHandle(self.breach, pinned(len(self._templates),
-                                                                          self.workers or default_workers())))
+                self._templates.append(TemplateHandle(self.breach))
             return sorted(self._templates, key=lambda t: t.lock.locked())[:n]
 
     def pids(self) -> list[int]:
@@ -125,8 +125,9 @@ class LocalSandbox:
         templates, each taking its next ones from the feed as it runs low; Executions by index."""
         results: dict[int, Execution] = {}
 
-        def drive(template: TemplateHandle):
+        def drive(template: TemplateHandle, cpu: int | None):
             with template.lock:
+                template.cpu = cpu
                 taken: list[int] = []
 
                 def more() -> tuple[list[bytes], frozenset[int]]:
@@ -141,9 +142,10 @@ class LocalSandbox:
 
         templates = self.templates(feed.takers)
         if len(templates) == 1:
-            drive(templates[0])
+            drive(templates[0], None)
         else:
-            threads = [threading.Thread(target=drive, args=(t,), daemon=True) for t in templates]
+            threads = [threading.Thread(target=drive, args=(t, cpu), daemon=True)
+                       for t, cpu in zip(templates, pinned(len(templates)))]
             for t in threads:
                 t.start()
             for t in threads:

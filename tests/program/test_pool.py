@@ -139,18 +139,23 @@ def _cpus_of(pid: int) -> str:
 
 
 @pytest.mark.skipif(not 2 <= len(os.sched_getaffinity(0)) <= 4, reason="needs 2 to 4 CPUs")
-def test_templates_as_many_as_the_cpus_each_run_on_a_cpu_of_their_own():
-    """pool.pinned: a template, its zygote and so every child of theirs run on one CPU, another for
-    each template, when the templates are as many as this process's CPUs; else on any CPU."""
+def test_a_call_on_as_many_templates_as_cpus_runs_each_on_a_cpu_of_its_own():
+    """pool.pinned: while a call runs on as many templates as this process's CPUs, each template,
+    its zygote and so every child of theirs run on one CPU, another for each template; a call on
+    fewer templates leaves them on any CPU again."""
     cpus = sorted(os.sched_getaffinity(0))
-    assert pool.pinned(0, len(cpus) + 1) is None and pool.pinned(0, len(cpus) - 1) is None
+    every = f"{cpus[0]}-{cpus[-1]}" if cpus == list(range(cpus[0], cpus[-1] + 1)) else ",".join(map(str, cpus))
+    assert pool.pinned(len(cpus) + 1) == [None] * (len(cpus) + 1) and pool.pinned(len(cpus)) == cpus
     box = pool.LocalSandbox(workers=len(cpus))
     try:
         results = box.execute_many([_benign(i) for i in range(64 * len(cpus))], cache=False)
         assert all(ex.ok for ex in results)
-        held = [{_cpus_of(pid) for pid in _tree(t.proc.pid)} for t in box._templates]
-        trees = [len(_tree(t.proc.pid)) for t in box._templates]
+        # under the process started (it only waits): the template (pid 1 of its namespace), its zygote
+        held = sorted([_cpus_of(pid) for pid in _tree(t.proc.pid)[1:]] for t in box._templates)
+        assert min(map(len, held)) >= 2
+        assert [set(tree) for tree in held] == [{str(cpu)} for cpu in cpus]
+        assert box.execute_many([_benign(1) + "\nz = 0"], cache=False)[0].ok  # one template
+        again = [{_cpus_of(pid) for pid in _tree(t.proc.pid)[1:]} for t in box._templates]
     finally:
         box.close()
-    assert held == [{str(cpu)} for cpu in cpus]
-    assert min(trees) >= 3  # the process started, the template (pid 1 of its namespace) and its zygote
+    assert {every} in again  # the template that ran it, and its zygote: any CPU again

@@ -9,7 +9,8 @@ Protocol with the parent (driver.py), lines of bytes:
   template -> parent, once at start: '"ready" {"pid": its pid outside, "walls": [[namespace, up, why]]}',
       or "unconfined: <why>" (then it exits: the walls cannot be built here; no program runs unconfined)
   parent -> template, per chunk: a header {"limits": [...Limits fields...], "rows": R, "cols": C,
-      "semantics": "module" | "paper", "items": K, "mode": "code" | "gold" | "answer" | "breach"}, then K
+      "semantics": "module" | "paper", "items": K, "mode": "code" | "gold" | "answer" | "breach",
+      "cpu": the one CPU it, its zygote and their children run on from now on, or null: any}, then K
       lines, each a program as the parent compiled it (runtime.answer_item; "breach": a JSON string)
   template -> parent, one line per item, in order: b"<how> <status> <answer as base64>", where
       <how> is how the child ended: "exit" (status: its exit status), "signal" (status: the signal
@@ -111,6 +112,8 @@ class Template:
         gc.collect()
         gc.freeze()  # the template's objects are never collected: a child's collections touch none of them
         self.base = _vm_bytes()
+        self.cpus = os.sched_getaffinity(0)  # the CPUs it may use
+        self.cpu: int | None = None  # the one it runs on (place)
 
     def start(self) -> None:
         """Once the template is set up (its namespaces finished): the zygote that every child is
@@ -126,6 +129,15 @@ class Template:
                 raise Unconfinable(f"the kernel refused the seccomp filter or the rlimits (status {status})")
             if (how, status, answer) != (b"exit", 0, b"%d" % errno.EPERM):
                 raise Unconfinable(f"a confined process could open a file ({how.decode()} {status} {answer[:40]!r})")
+
+    def place(self, cpu: int | None) -> None:
+        """Run on `cpu` from now on, and so do the zygote and its children (None: any; pool.pinned)."""
+        try:
+            for pid in (0, self.zygote.pid) if cpu != self.cpu else ():
+                os.sched_setaffinity(pid, self.cpus if cpu is None else {cpu})
+            self.cpu = cpu
+        except (OSError, ValueError):  # scheduling only: where the kernel refuses, as before
+            pass
 
     def fork(self, work: Callable[[], bytes], limits: Limits) -> tuple[bytes, int, bytes]:
         """Run work() (-> the answer's bytes) in a fresh confined child; how it ended, its status
@@ -245,6 +257,7 @@ class Template:
             limits = Limits(*request["limits"])
             rows, cols, semantics = request["rows"], request["cols"], request["semantics"]
             mode = request.get("mode")
+            self.place(request.get("cpu"))
             breach = mode == "breach"
             items = [inp.readline() for _ in range(request["items"])]
             if mode in ("gold", "answer"):  # one chunk in one child (batch.py)
@@ -264,18 +277,11 @@ class Template:
                 out.flush()
 
 
-def main(parent: int = 0, breach: bool = False, namespaces: bool = True, cpu: int | None = None) -> int:
+def main(parent: int = 0, breach: bool = False, namespaces: bool = True) -> int:
     """The template's life: its namespaces (isolation.py), the seccomp filter (stdin's first line,
-    BPF in base64), chunks of programs (the module docstring); "ready" names the namespaces up.
-    `cpu`: the one CPU it, its zygote and their children run on (pool.pinned; where the kernel
-    refuses it, any)."""
+    BPF in base64), chunks of programs (the module docstring); "ready" names the namespaces up."""
     from . import confine, isolation
 
-    if cpu is not None:
-        try:
-            os.sched_setaffinity(0, {cpu})
-        except OSError:  # a CPU this process may not use now: only slower
-            pass
     isolation.fixed_layout()
     isolation.die_with_parent(parent)
     refused = isolation.enter_namespaces() if namespaces else "not asked for (a template without namespaces)"
