@@ -70,18 +70,25 @@ class Feed:
 
     def take(self) -> list[int]:
         """The next programs of one template, once some are ready ([]: none will be): a share of
-        what is left (of what is ready, while the parent compiles), whole answers, GRAIN at least."""
+        what is left (of what is ready, while the parent compiles), whole answers, GRAIN at least;
+        with one taker, all that is ready."""
         with self._cv:
             while not self._ready and self._open and not self._stopped:
                 self._cv.wait()
             if self._stopped or not self._ready:
                 return []
-            share = min(-(-self._left // (2 * self.takers)), -(-len(self._ready) // self.takers))
+            share = len(self._ready) if self.takers == 1 else \
+                min(-(-self._left // (2 * self.takers)), -(-len(self._ready) // self.takers))
             batch = [self._ready.popleft() for _ in range(min(max(GRAIN, share), len(self._ready)))]
             while self.labels is not None and self._ready and self.labels[self._ready[0]] == self.labels[batch[-1]]:
                 batch.append(self._ready.popleft())
             self._left -= len(batch)
             return batch
+
+    def done(self) -> bool:
+        """Nothing more will be handed out: every part is in and taken."""
+        with self._cv:
+            return self._stopped or not (self._ready or self._open)
 
     def starts(self, batch: list[int]) -> frozenset[int]:
         """Where a new answer starts in a batch (mode ANSWER; else none)."""

@@ -137,7 +137,8 @@ class LocalSandbox:
 
                 first, starts = more()
                 if first:
-                    answers = template.run(first, rows, cols, limits, semantics, mode, starts=starts, more=more)
+                    answers = template.run(first, rows, cols, limits, semantics, mode, starts=starts,
+                                           more=None if feed.done() else more)  # (a small call: no writer thread)
                     results.update(zip(taken, answers))
 
         templates = self.templates(feed.takers)

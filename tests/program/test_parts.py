@@ -47,6 +47,10 @@ def test_takes_share_what_is_left_and_never_split_an_answer():
     assert all(len(t) % 3 == 0 for t in takes)  # whole answers only
     assert len(takes[1]) > len(takes[-2]) >= feed.GRAIN  # shares shrink as the call ends
     assert fed.starts(takes[1]) == frozenset(range(0, len(takes[1]), 3))
+    alone = feed.Feed(40, 1)  # one template: all that is ready at once, and then no more
+    alone.put(list(range(40)), 40)
+    alone.close()
+    assert alone.take() == list(range(40)) and alone.done()
 
 
 def test_a_stopped_feed_hands_out_nothing_more():
