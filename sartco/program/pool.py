@@ -52,10 +52,10 @@ def default_workers() -> int:
 
 def pinned(n: int) -> list[int | None]:
     """The CPU of each of a call's n templates: one of its own (and of its zygote and children)
-    when they are as many as this process's CPUs, else any (None). A template's chain (it, its
-    zygote, the child) runs one process at a time, and left to the scheduler two chains shared a
-    core at times while the other idled (docs/sandbox.md); a call on fewer templates, or
-    templates of other processes beside them, are left to the scheduler."""
+    when they are as many as this process's CPUs, else any (None: the scheduler's choice). A
+    template's chain (it, its zygote, the child) runs one process at a time, and left to the
+    scheduler two chains shared a core at times while the other idled (docs/sandbox.md). Other
+    processes' templates are not looked at: each process's big calls spread over every CPU alike."""
     cpus = sorted(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else []
     return list(cpus) if len(cpus) == n else [None] * n
 
